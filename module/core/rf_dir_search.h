@@ -1,0 +1,76 @@
+/* rf_dir_search.h: the ray / perspective-depth-map intersection of
+ * Oliveira and Brauwers 2007 ("DIR"), sections 3.2-3.3, on the CPU.
+ *
+ * Everything is in view (camera) space with the OpenGL convention: the
+ * camera sits at the origin looking down -z, so visible points have z < 0.
+ * Depths are POSITIVE distances d = -z_view, as stored in the depth map. */
+#ifndef RF_DIR_SEARCH_H
+#define RF_DIR_SEARCH_H
+
+#include "rf_validate.h"
+#include "rf_vec3.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The search segment of one refracted ray T1 and its per-ray constants. */
+typedef struct rf_dir_segment
+{
+  rf_vec3 S;    /* ray point on the plane z = -depth_min (eq. 3) */
+  rf_vec3 E;    /* ray point on the plane z = -depth_max (eq. 4) */
+  double k1;    /* 1 / S.z (eq. 9) */
+  double k2;    /* S.z E.z / (S.z - E.z) (eq. 9) */
+  double ts[2]; /* texture coordinates of S, t'_s (eq. 10) */
+  double te[2]; /* texture coordinates of E, t'_e (eq. 10) */
+} rf_dir_segment;
+
+/* Builds the segment of the ray P1 + t T1 (T1 need not be unit) between the
+ * depth planes (eq. 3-4), its constants k1, k2 (eq. 9) and the texture
+ * coordinates of S and E (eq. 10). `projection` is the OpenGL perspective
+ * projection as a 4x4 ROW-MAJOR matrix (element [row * 4 + col]) applied to
+ * column vectors; eq. 8 assumes its w row is (0, 0, -1, 0).
+ * Errors: RF_ERR_NULL_ARGUMENT; RF_ERR_NOT_FINITE (non-finite input or
+ * projection); RF_ERR_EMPTY_RANGE (see rf_validate_depth_range, and
+ * depth_min == depth_max); RF_ERR_DEGENERATE_DIRECTION (|T1.z| < 1e-12, or
+ * T1.z > 0: the ray moves toward the camera and never reaches the range, or
+ * S or E projects onto or behind the camera plane). On error *seg is left
+ * unchanged. */
+rf_status rf_dir_segment_init(rf_vec3 P1, rf_vec3 T1, double depth_min, double depth_max,
+  const double projection[16], rf_dir_segment* seg);
+
+/* Image-space interpolation parameter of the ray point with view-space z
+ * coordinate Pz (negative), eq. 9: alpha = (1/Pz - k1) k2. 0 at S, 1 at E.
+ * NaN when seg is NULL. */
+double rf_dir_alpha(const rf_dir_segment* seg, double Pz);
+
+/* Texture coordinates at alpha, eq. 10: (1 - alpha) t'_s + alpha t'_e.
+ * Writes NaNs when seg is NULL; does nothing when tc is NULL. */
+void rf_dir_texcoord(const rf_dir_segment* seg, double alpha, double tc[2]);
+
+/* Returns the stored POSITIVE depth at texture coordinate tc, or 0 for an
+ * empty texel (outside the object's silhouette). */
+typedef double (*rf_depth_sampler)(void* context, const double tc[2]);
+
+/* Conservative binary search (Algorithm 2): starts at S and, halving the step
+ * each time, advances toward E only while the candidate point lies in front
+ * of the stored depth; an empty texel (depth 0) never lets the ray advance,
+ * so the result maps to a valid texel whenever the search moved at all.
+ * On RF_OK: *P2 is the estimate of the intersection, tc its texture
+ * coordinates (eq. 10) and *beta its parameter along S-E (eq. 5). When the
+ * segment crosses the stored surface once, inside the silhouette, beta lies
+ * below the crossing by at most rf_cbs_error_bound(steps). `context` is
+ * passed through to `sample` (may be NULL); a NaN sample counts as empty.
+ * Errors: RF_ERR_NULL_ARGUMENT, RF_ERR_STEPS_OUT_OF_RANGE. */
+rf_status rf_dir_cbs(const rf_dir_segment* seg, int steps, rf_depth_sampler sample, void* context,
+  rf_vec3* P2, double tc[2], double* beta);
+
+/* The paper's bound on the CBS error in beta after `steps` steps: 0.5^steps
+ * (section 3.3). 1.0 (the whole segment) for negative steps. */
+double rf_cbs_error_bound(int steps);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* RF_DIR_SEARCH_H */

@@ -1,0 +1,18 @@
+/* The built-in environment: a sky/ground/studio pattern made in code, so the demo, the tests
+ * and the reference tracer need no image file. The GLSL twin is rfBuiltinEnvironment in
+ * shaders/rfEnvironment.glsl: keep the two formulas identical. */
+#ifndef RF_ENVIRONMENT_H
+#define RF_ENVIRONMENT_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* World space, +y up. The direction need not be unit length; a zero or non-finite direction
+ * gives the horizon colour. Colours are linear RGB, at most about 3 (the sun). */
+void rf_builtin_environment(const double direction_world[3], double rgb[3]);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

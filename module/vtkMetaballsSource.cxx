@@ -1,0 +1,190 @@
+#include "vtkMetaballsSource.h"
+
+#include "vtkDataObject.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <cmath>
+#include <vector>
+
+vtkStandardNewMacro(vtkMetaballsSource);
+
+namespace
+{
+// Keeps the field finite when a grid point coincides with a ball centre; far
+// below the grid spacing squared, so it does not change the surface.
+constexpr double FieldEpsilon = 1.0e-6;
+}
+
+//------------------------------------------------------------------------------
+vtkMetaballsSource::vtkMetaballsSource()
+  : SampleDimensions(48)
+  , NumberOfBalls(4)
+  , NumberOfTimeSteps(60)
+  , TimePeriod(1.0)
+  , BallRadius(0.35)
+  , IsoValue(1.0)
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballsSource::ComputeBallCenter(int ball, double time, double center[3]) const
+{
+  // One period of the motion is one turn of the phase angle; every term below
+  // uses an integer multiple of it, which is what makes the motion periodic
+  // with period TimePeriod.
+  const double tau = 2.0 * vtkMath::Pi() * time / this->TimePeriod;
+  const int n = this->NumberOfBalls > 0 ? this->NumberOfBalls : 1;
+  const double phase = 2.0 * vtkMath::Pi() * ball / n;
+
+  // Neighbouring balls orbit in opposite directions so they pass through each
+  // other (merge) and then separate (split) rather than turning as a rigid
+  // group.
+  const double spin = (ball % 2 == 0) ? 1.0 : -1.0;
+  const double angle = spin * tau + phase;
+  // The orbit radius breathes twice per period, pulling the group together
+  // into a single blob and pushing it apart again.
+  const double orbit = 0.32 + 0.12 * std::sin(2.0 * tau + phase);
+  // Tilting each orbit plane differently makes the motion three-dimensional.
+  const double tilt = 0.6 * std::cos(phase);
+  const double u = orbit * std::cos(angle);
+  const double v = orbit * std::sin(angle);
+  const double bob = 0.12 * std::sin(3.0 * tau + 2.0 * phase);
+
+  center[0] = u;
+  center[1] = v * std::cos(tilt) - bob * std::sin(tilt);
+  center[2] = v * std::sin(tilt) + bob * std::cos(tilt);
+}
+
+//------------------------------------------------------------------------------
+int vtkMetaballsSource::RequestInformation(vtkInformation* vtkNotUsed(request),
+  vtkInformationVector** vtkNotUsed(inputVector), vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+
+  const int n = this->SampleDimensions;
+  int wholeExtent[6] = { 0, n - 1, 0, n - 1, 0, n - 1 };
+  const double spacing = 2.0 / (n - 1);
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), wholeExtent, 6);
+  outInfo->Set(vtkDataObject::SPACING(), spacing, spacing, spacing);
+  outInfo->Set(vtkDataObject::ORIGIN(), -1.0, -1.0, -1.0);
+  vtkDataObject::SetPointDataActiveScalarInfo(outInfo, VTK_FLOAT, 1);
+
+  // The period end is left out of the steps: it is the same state as t = 0.
+  std::vector<double> steps(static_cast<size_t>(this->NumberOfTimeSteps));
+  for (int k = 0; k < this->NumberOfTimeSteps; ++k)
+  {
+    steps[k] = this->TimePeriod * k / this->NumberOfTimeSteps;
+  }
+  outInfo->Set(
+    vtkStreamingDemandDrivenPipeline::TIME_STEPS(), steps.data(), this->NumberOfTimeSteps);
+  // The field is defined at any time, so the range is the whole period.
+  double range[2] = { 0.0, this->TimePeriod };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkMetaballsSource::RequestData(vtkInformation* vtkNotUsed(request),
+  vtkInformationVector** vtkNotUsed(inputVector), vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkImageData* output = vtkImageData::GetData(outInfo);
+  if (!output)
+  {
+    vtkErrorMacro("Output is not a vtkImageData.");
+    return 0;
+  }
+
+  const double time = outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+    ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP())
+    : 0.0;
+
+  // Honour a downstream request for a sub-extent (streaming, pieces); the
+  // field at a point does not depend on its neighbours, so any extent works.
+  const int n = this->SampleDimensions;
+  int extent[6] = { 0, n - 1, 0, n - 1, 0, n - 1 };
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+  {
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  }
+  const double spacing = 2.0 / (n - 1);
+  output->SetExtent(extent);
+  output->SetSpacing(spacing, spacing, spacing);
+  output->SetOrigin(-1.0, -1.0, -1.0);
+
+  const int nx = extent[1] - extent[0] + 1;
+  const int ny = extent[3] - extent[2] + 1;
+  const int nz = extent[5] - extent[4] + 1;
+  vtkNew<vtkFloatArray> field;
+  field->SetName("field");
+  field->SetNumberOfComponents(1);
+  const vtkIdType numPoints = (nx > 0 && ny > 0 && nz > 0)
+    ? static_cast<vtkIdType>(nx) * static_cast<vtkIdType>(ny) * static_cast<vtkIdType>(nz)
+    : 0;
+  field->SetNumberOfTuples(numPoints);
+
+  std::vector<double> centers(3 * static_cast<size_t>(this->NumberOfBalls));
+  for (int b = 0; b < this->NumberOfBalls; ++b)
+  {
+    this->ComputeBallCenter(b, time, &centers[3 * b]);
+  }
+  const double r2 = this->BallRadius * this->BallRadius;
+  const int numBalls = this->NumberOfBalls;
+  float* values = field->GetPointer(0);
+
+  if (numPoints > 0)
+  {
+    // Slices are independent, and large grids are slow enough on one thread
+    // to make scrubbing through time sluggish.
+    vtkSMPTools::For(0, nz, [&](vtkIdType kBegin, vtkIdType kEnd) {
+      for (vtkIdType k = kBegin; k < kEnd; ++k)
+      {
+        const double z = -1.0 + spacing * (extent[4] + k);
+        float* out = values + k * nx * ny;
+        for (int j = 0; j < ny; ++j)
+        {
+          const double y = -1.0 + spacing * (extent[2] + j);
+          for (int i = 0; i < nx; ++i)
+          {
+            const double x = -1.0 + spacing * (extent[0] + i);
+            double sum = 0.0;
+            for (int b = 0; b < numBalls; ++b)
+            {
+              const double dx = x - centers[3 * b];
+              const double dy = y - centers[3 * b + 1];
+              const double dz = z - centers[3 * b + 2];
+              sum += r2 / (dx * dx + dy * dy + dz * dz + FieldEpsilon);
+            }
+            *out++ = static_cast<float>(sum);
+          }
+        }
+      }
+    });
+  }
+
+  output->GetPointData()->SetScalars(field);
+  output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), time);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkMetaballsSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SampleDimensions: " << this->SampleDimensions << "\n";
+  os << indent << "NumberOfBalls: " << this->NumberOfBalls << "\n";
+  os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
+  os << indent << "TimePeriod: " << this->TimePeriod << "\n";
+  os << indent << "BallRadius: " << this->BallRadius << "\n";
+  os << indent << "IsoValue: " << this->IsoValue << "\n";
+}

@@ -1,0 +1,880 @@
+#include "vtkRefractionPass.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleKey.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLTexture.h"
+#include "vtkPointData.h"
+#include "vtkProp.h"
+#include "vtkRenderState.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include "rfShaders.h"
+#include "rf_validate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(vtkRefractionPass);
+vtkInformationKeyMacro(vtkRefractionPass, GLASS, Integer);
+vtkInformationKeyMacro(vtkRefractionPass, INDEX_OF_REFRACTION, Double);
+
+namespace
+{
+const char* const kImplMarker = "//RF::Impl";
+const char* const kEnvironmentMarker = "//RF::Environment";
+
+vtkInformation* GetOrCreateKeys(vtkProp* prop)
+{
+  vtkInformation* keys = prop->GetPropertyKeys();
+  if (!keys)
+  {
+    vtkNew<vtkInformation> created;
+    prop->SetPropertyKeys(created);
+    keys = created;
+  }
+  return keys;
+}
+
+vtkSmartPointer<vtkTextureObject> MakeTexture(vtkOpenGLRenderWindow* renWin, int width,
+  int height, int components, int internalFormat, int format, int filter)
+{
+  auto texture = vtkSmartPointer<vtkTextureObject>::New();
+  texture->SetContext(renWin);
+  texture->SetInternalFormat(internalFormat);
+  texture->SetFormat(format);
+  texture->SetDataType(GL_FLOAT);
+  texture->SetMinificationFilter(filter);
+  texture->SetMagnificationFilter(filter);
+  texture->SetWrapS(vtkTextureObject::ClampToEdge);
+  texture->SetWrapT(vtkTextureObject::ClampToEdge);
+  texture->Allocate2D(width, height, components, VTK_FLOAT);
+  return texture;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkRefractionPass::vtkRefractionPass() = default;
+
+//------------------------------------------------------------------------------
+vtkRefractionPass::~vtkRefractionPass()
+{
+  this->SetDelegatePass(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::SetDelegatePass(vtkRenderPass* delegatePass)
+{
+  vtkSetObjectBodyMacro(DelegatePass, vtkRenderPass, delegatePass);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Method: " << (this->Method == DIR ? "DIR" : "SIR") << "\n";
+  os << indent << "SearchSteps: " << this->SearchSteps << "\n";
+  os << indent << "DepthRangeMode: "
+     << (this->DepthRangeMode == DEPTH_RANGE_REDUCTION ? "reduction" : "bounds") << "\n";
+  os << indent << "TIRPolicy: " << (this->TIRPolicy == TIR_CLAMP ? "clamp" : "reflect") << "\n";
+  os << indent << "Fresnel: " << this->Fresnel << "\n";
+  os << indent << "DebugOutput: " << this->DebugOutput << "\n";
+  os << indent << "NumberOfGlassProps: " << this->NumberOfGlassProps << "\n";
+  os << indent << "DelegatePass: ";
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->PrintSelf(os, indent.GetNextIndent());
+  }
+  else
+  {
+    os << "(none)\n";
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionPass::MakeGlass(vtkProp* prop, double indexOfRefraction)
+{
+  if (!prop)
+  {
+    vtkGenericWarningMacro("vtkRefractionPass::MakeGlass: no prop given.");
+    return false;
+  }
+  const rf_status status = rf_validate_ior(indexOfRefraction);
+  if (status != RF_OK)
+  {
+    vtkErrorWithObjectMacro(prop, "vtkRefractionPass::MakeGlass: index of refraction "
+        << indexOfRefraction << " rejected for " << prop->GetClassName() << " " << prop << ": "
+        << rf_status_message(status) << " The prop is not marked as glass.");
+    return false;
+  }
+  vtkInformation* keys = GetOrCreateKeys(prop);
+  keys->Set(GLASS(), 1);
+  keys->Set(INDEX_OF_REFRACTION(), indexOfRefraction);
+  prop->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::ClearGlass(vtkProp* prop)
+{
+  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
+  if (keys)
+  {
+    keys->Remove(GLASS());
+    keys->Remove(INDEX_OF_REFRACTION());
+    prop->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionPass::IsGlass(vtkProp* prop)
+{
+  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
+  return keys && keys->Has(GLASS()) && keys->Get(GLASS()) != 0;
+}
+
+//------------------------------------------------------------------------------
+double vtkRefractionPass::GetIndexOfRefraction(vtkProp* prop)
+{
+  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
+  return keys && keys->Has(INDEX_OF_REFRACTION()) ? keys->Get(INDEX_OF_REFRACTION()) : 1.5;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::SetSearchSteps(int steps)
+{
+  if (rf_validate_cbs_steps(steps) != RF_OK)
+  {
+    vtkErrorMacro("SearchSteps " << steps << " rejected: "
+                                 << rf_status_message(rf_validate_cbs_steps(steps))
+                                 << " Keeping " << this->SearchSteps << ".");
+    return;
+  }
+  if (steps != this->SearchSteps)
+  {
+    this->SearchSteps = steps;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkRefractionPass::GetDebugImage()
+{
+  return this->DebugImage;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::SplitProps(
+  const vtkRenderState* s, std::vector<vtkProp*>& glass, std::vector<vtkProp*>* others)
+{
+  glass.clear();
+  if (others)
+  {
+    others->clear();
+  }
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (!IsGlass(prop))
+    {
+      if (others)
+      {
+        others->push_back(prop);
+      }
+      continue;
+    }
+    const double ior = GetIndexOfRefraction(prop);
+    const rf_status status = rf_validate_ior(ior);
+    if (status != RF_OK)
+    {
+      // The key was set by hand: report it, and draw the prop as an ordinary actor.
+      vtkErrorMacro("Glass prop " << prop->GetClassName() << " " << prop
+                                  << " has index of refraction " << ior << ": "
+                                  << rf_status_message(status) << " It is drawn as opaque.");
+      if (others)
+      {
+        others->push_back(prop);
+      }
+      continue;
+    }
+    glass.push_back(prop);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::Render(const vtkRenderState* s)
+{
+  vtkOpenGLClearErrorMacro();
+  this->NumberOfRenderedProps = 0;
+  if (this->InsideSteps)
+  {
+    // Called back by the steps pass in place of its opaque pass.
+    this->RenderOpaqueAndGlass(s);
+    return;
+  }
+  if (!this->DelegatePass)
+  {
+    vtkNew<vtkRenderStepsPass> steps;
+    this->SetDelegatePass(steps);
+  }
+
+  std::vector<vtkProp*> glass;
+  this->SplitProps(s, glass, nullptr);
+  this->NumberOfGlassProps = static_cast<int>(glass.size());
+  vtkRenderStepsPass* steps = vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
+  if (glass.empty())
+  {
+    // Nothing to refract: the delegate alone, as if the pass were not there.
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    return;
+  }
+  if (steps && steps->GetOpaquePass())
+  {
+    // Take the place of the opaque step so that translucent geometry and overlays are drawn
+    // after the glass, as they would be after opaque geometry.
+    this->OpaqueDelegate = steps->GetOpaquePass();
+    this->InsideSteps = true;
+    steps->SetOpaquePass(this);
+    steps->Render(s);
+    steps->SetOpaquePass(this->OpaqueDelegate);
+    this->InsideSteps = false;
+    this->OpaqueDelegate = nullptr;
+    this->NumberOfRenderedProps = steps->GetNumberOfRenderedProps();
+    return;
+  }
+  // Another kind of delegate: it draws everything but the glass, then the glass goes on top.
+  std::vector<vtkProp*> others;
+  this->SplitProps(s, glass, &others);
+  vtkRenderState othersState(s->GetRenderer());
+  othersState.SetFrameBuffer(s->GetFrameBuffer());
+  othersState.SetRequiredKeys(s->GetRequiredKeys());
+  othersState.SetPropArrayAndCount(others.data(), static_cast<int>(others.size()));
+  this->DelegatePass->Render(&othersState);
+  this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+  this->RenderGlass(s, glass);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::RenderOpaqueAndGlass(const vtkRenderState* s)
+{
+  std::vector<vtkProp*> glass;
+  std::vector<vtkProp*> others;
+  this->SplitProps(s, glass, &others);
+  vtkRenderState othersState(s->GetRenderer());
+  othersState.SetFrameBuffer(s->GetFrameBuffer());
+  othersState.SetRequiredKeys(s->GetRequiredKeys());
+  othersState.SetPropArrayAndCount(others.data(), static_cast<int>(others.size()));
+  this->OpaqueDelegate->Render(&othersState);
+  this->NumberOfRenderedProps = this->OpaqueDelegate->GetNumberOfRenderedProps();
+  this->RenderGlass(s, glass);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::RenderProps(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& props)
+{
+  for (vtkProp* prop : props)
+  {
+    this->NumberOfRenderedProps += prop->RenderOpaqueGeometry(ren);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::AllocateTextures(vtkOpenGLRenderWindow* renWin, int width, int height)
+{
+  if (!this->Framebuffer)
+  {
+    this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    this->Framebuffer->SetContext(renWin);
+  }
+  if (this->BackNormalTexture && this->Width == width && this->Height == height)
+  {
+    return;
+  }
+  this->Width = width;
+  this->Height = height;
+  // Normals are filtered (the paper: filtering reduces noise; empty texels are zero vectors,
+  // which only shorten a filtered normal); depths never are.
+  this->BackNormalTexture =
+    MakeTexture(renWin, width, height, 4, GL_RGBA16F, GL_RGBA, vtkTextureObject::Linear);
+  this->BackDepthTexture =
+    MakeTexture(renWin, width, height, 1, GL_R32F, GL_RED, vtkTextureObject::Nearest);
+  this->BackZBuffer = vtkSmartPointer<vtkTextureObject>::New();
+  this->BackZBuffer->SetContext(renWin);
+  this->BackZBuffer->AllocateDepth(width, height, vtkTextureObject::Float32);
+
+  this->ReductionLevels.clear();
+  int w = width;
+  int h = height;
+  do
+  {
+    w = (w + 1) / 2;
+    h = (h + 1) / 2;
+    this->ReductionLevels.push_back(
+      MakeTexture(renWin, w, h, 2, GL_RG32F, GL_RG, vtkTextureObject::Nearest));
+  } while (w > 1 || h > 1);
+
+  this->DebugTextures[0] = nullptr;
+  this->DebugTextures[1] = nullptr;
+  this->DebugZBuffer = nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp*>& glass)
+{
+  this->NumberOfGlassProps = static_cast<int>(glass.size());
+  if (glass.empty())
+  {
+    return;
+  }
+  vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  vtkOpenGLRenderWindow* renWin =
+    ren ? vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()) : nullptr;
+  if (!renWin)
+  {
+    vtkErrorMacro("vtkRefractionPass needs an OpenGL renderer and render window.");
+    return;
+  }
+  int width = 0;
+  int height = 0;
+  ren->GetTiledSizeAndOrigin(&width, &height, this->ViewportOrigin, this->ViewportOrigin + 1);
+  if (width < 1 || height < 1)
+  {
+    return;
+  }
+  this->AllocateTextures(renWin, width, height);
+  this->UpdateShaderDefines(ren);
+  this->UpdateCameraUniforms(ren);
+
+  vtkRenderState glassState(ren);
+  glassState.SetFrameBuffer(s->GetFrameBuffer());
+  glassState.SetPropArrayAndCount(glass.data(), static_cast<int>(glass.size()));
+  this->PreRender(&glassState);
+
+  if (this->Method == DIR)
+  {
+    this->CaptureBackSurface(ren, glass);
+    if (this->DepthRangeMode == DEPTH_RANGE_REDUCTION)
+    {
+      this->ReduceDepthRange(renWin);
+    }
+    else
+    {
+      this->ComputeBoundsDepthRange(ren, glass);
+    }
+  }
+
+  vtkTexture* environment = ren->GetEnvironmentTexture();
+  this->CurrentEnvironment = environment;
+  if (this->UseEnvironmentCube)
+  {
+    environment->Render(ren);
+  }
+  this->BackNormalTexture->Activate();
+  this->BackDepthTexture->Activate();
+  this->ReductionLevels.back()->Activate();
+
+  this->Stage = STAGE_FRONT;
+  this->RenderProps(ren, glass);
+  if (this->DebugOutput)
+  {
+    this->RenderDebugImage(ren, glass);
+  }
+  this->Stage = STAGE_NONE;
+
+  this->ReductionLevels.back()->Deactivate();
+  this->BackDepthTexture->Deactivate();
+  this->BackNormalTexture->Deactivate();
+  if (this->UseEnvironmentCube)
+  {
+    environment->PostRender(ren);
+  }
+  this->CurrentEnvironment = nullptr;
+  this->PostRender(&glassState);
+  vtkOpenGLCheckErrorMacro("failed after the refraction pass");
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::CaptureBackSurface(
+  vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass)
+{
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  this->Framebuffer->SaveCurrentBindingsAndBuffers();
+  this->Framebuffer->Bind();
+  this->Framebuffer->AddColorAttachment(0, this->BackNormalTexture);
+  this->Framebuffer->AddColorAttachment(1, this->BackDepthTexture);
+  this->Framebuffer->AddDepthAttachment(this->BackZBuffer);
+  this->Framebuffer->ActivateDrawBuffers(2);
+  this->ActiveDrawBuffers = 2;
+  {
+    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+    ostate->vtkglViewport(0, 0, this->Width, this->Height);
+    ostate->vtkglScissor(0, 0, this->Width, this->Height);
+    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    ostate->vtkglDepthMask(GL_TRUE);
+    ostate->vtkglClearDepth(0.0);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    ostate->vtkglClearDepth(1.0);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_GREATER);
+    ostate->vtkglDisable(GL_BLEND);
+    this->Stage = STAGE_BACK;
+    this->RenderProps(ren, glass);
+    this->Stage = STAGE_NONE;
+  }
+  this->ActiveDrawBuffers = 0;
+  this->Framebuffer->RemoveColorAttachment(1);
+  this->Framebuffer->UnBind();
+  this->Framebuffer->RestorePreviousBindingsAndBuffers();
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::ReduceDepthRange(vtkOpenGLRenderWindow* renWin)
+{
+  vtkOpenGLState* ostate = renWin->GetState();
+  if (!this->ReductionQuad)
+  {
+    this->ReductionQuad.reset(new vtkOpenGLQuadHelper(renWin,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), rfReductionFSSource, ""));
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(this->ReductionQuad->Program);
+  }
+  vtkShaderProgram* program = this->ReductionQuad->Program;
+  if (!program || !program->GetCompiled())
+  {
+    vtkErrorMacro("Could not build the depth-range reduction shader.");
+    return;
+  }
+  this->Framebuffer->SaveCurrentBindingsAndBuffers();
+  this->Framebuffer->Bind();
+  {
+    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    vtkTextureObject* source = this->BackDepthTexture;
+    for (size_t level = 0; level < this->ReductionLevels.size(); ++level)
+    {
+      vtkTextureObject* target = this->ReductionLevels[level];
+      this->Framebuffer->AddColorAttachment(0, target);
+      this->Framebuffer->ActivateDrawBuffers(1);
+      const int w = static_cast<int>(target->GetWidth());
+      const int h = static_cast<int>(target->GetHeight());
+      ostate->vtkglViewport(0, 0, w, h);
+      ostate->vtkglScissor(0, 0, w, h);
+      source->Activate();
+      program->SetUniformi("rfSource", source->GetTextureUnit());
+      const int size[2] = { static_cast<int>(source->GetWidth()),
+        static_cast<int>(source->GetHeight()) };
+      program->SetUniform2i("rfSourceSize", size);
+      program->SetUniformi("rfFirstLevel", level == 0 ? 1 : 0);
+      const int targetSize[2] = { w, h };
+      program->SetUniform2i("rfTargetSize", targetSize);
+      this->ReductionQuad->Render();
+      source->Deactivate();
+      source = target;
+    }
+  }
+  this->Framebuffer->UnBind();
+  this->Framebuffer->RestorePreviousBindingsAndBuffers();
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::ComputeBoundsDepthRange(
+  vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass)
+{
+  vtkCamera* camera = ren->GetActiveCamera();
+  vtkMatrix4x4* view = camera->GetViewTransformMatrix();
+  double nearest = VTK_DOUBLE_MAX;
+  double furthest = 0.0;
+  for (vtkProp* prop : glass)
+  {
+    const double* b = prop->GetBounds();
+    if (!b || !(b[0] <= b[1]))
+    {
+      continue;
+    }
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const double p[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)],
+        1.0 };
+      double q[4];
+      view->MultiplyPoint(p, q);
+      nearest = std::min(nearest, -q[2]);
+      furthest = std::max(furthest, -q[2]);
+    }
+  }
+  double clipping[2];
+  camera->GetClippingRange(clipping);
+  // Parts of a box behind the near plane are never captured: the search starts there.
+  this->BoundsDepthRange[0] = std::max(nearest, clipping[0]);
+  this->BoundsDepthRange[1] = furthest;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::RenderDebugImage(
+  vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass)
+{
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  if (!this->DebugTextures[0])
+  {
+    for (auto& texture : this->DebugTextures)
+    {
+      texture = MakeTexture(
+        renWin, this->Width, this->Height, 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest);
+    }
+    this->DebugZBuffer = vtkSmartPointer<vtkTextureObject>::New();
+    this->DebugZBuffer->SetContext(renWin);
+    this->DebugZBuffer->AllocateDepth(this->Width, this->Height, vtkTextureObject::Float32);
+  }
+  const vtkIdType count = static_cast<vtkIdType>(this->Width) * this->Height;
+  std::vector<float> pixels[2];
+  this->Framebuffer->SaveCurrentBindingsAndBuffers();
+  this->Framebuffer->Bind();
+  this->Framebuffer->AddColorAttachment(0, this->DebugTextures[0]);
+  this->Framebuffer->AddColorAttachment(1, this->DebugTextures[1]);
+  this->Framebuffer->AddDepthAttachment(this->DebugZBuffer);
+  this->Framebuffer->ActivateDrawBuffers(2);
+  this->ActiveDrawBuffers = 2;
+  {
+    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+    ostate->vtkglViewport(0, 0, this->Width, this->Height);
+    ostate->vtkglScissor(0, 0, this->Width, this->Height);
+    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    ostate->vtkglDepthMask(GL_TRUE);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_LEQUAL);
+    ostate->vtkglDisable(GL_BLEND);
+    this->Stage = STAGE_DEBUG;
+    this->RenderProps(ren, glass);
+    this->Stage = STAGE_FRONT;
+    for (int i = 0; i < 2; ++i)
+    {
+      pixels[i].resize(4 * count);
+      this->Framebuffer->ActivateReadBuffer(i);
+      glPixelStorei(GL_PACK_ALIGNMENT, 1);
+      glReadPixels(0, 0, this->Width, this->Height, GL_RGBA, GL_FLOAT, pixels[i].data());
+    }
+  }
+  this->ActiveDrawBuffers = 0;
+  this->Framebuffer->RemoveColorAttachment(1);
+  this->Framebuffer->UnBind();
+  this->Framebuffer->RestorePreviousBindingsAndBuffers();
+
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(this->Width, this->Height, 1);
+  vtkNew<vtkFloatArray> p2;
+  vtkNew<vtkFloatArray> t2;
+  vtkNew<vtkFloatArray> thickness;
+  vtkNew<vtkFloatArray> flags;
+  p2->SetName("P2");
+  t2->SetName("T2");
+  thickness->SetName("Thickness");
+  flags->SetName("Flags");
+  p2->SetNumberOfComponents(3);
+  t2->SetNumberOfComponents(3);
+  p2->SetNumberOfTuples(count);
+  t2->SetNumberOfTuples(count);
+  thickness->SetNumberOfTuples(count);
+  flags->SetNumberOfTuples(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    const float* a = &pixels[0][4 * i];
+    const float* b = &pixels[1][4 * i];
+    p2->SetTypedTuple(i, a);
+    thickness->SetValue(i, a[3]);
+    t2->SetTypedTuple(i, b);
+    flags->SetValue(i, b[3]);
+  }
+  image->GetPointData()->AddArray(p2);
+  image->GetPointData()->AddArray(t2);
+  image->GetPointData()->AddArray(thickness);
+  image->GetPointData()->AddArray(flags);
+  this->DebugImage = image;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::UpdateShaderDefines(vtkOpenGLRenderer* ren)
+{
+  vtkTexture* environment = ren->GetEnvironmentTexture();
+  const bool cube = environment && environment->GetCubeMap() &&
+    vtkOpenGLTexture::SafeDownCast(environment) != nullptr;
+  if (environment && !cube && !this->UseEnvironmentCube)
+  {
+    vtkWarningMacro("The renderer's environment texture is not an OpenGL cube map (wrap a "
+                    "lat-long image in vtkEquirectangularToCubeMapTexture); using the built-in "
+                    "environment.");
+  }
+  this->UseEnvironmentCube = cube;
+  std::ostringstream defines;
+  defines << "#define RF_MAX_SEARCH_STEPS " << RF_CBS_MAX_STEPS << "\n";
+  if (this->Method == DIR)
+  {
+    defines << "#define RF_METHOD_DIR\n";
+  }
+  if (this->TIRPolicy == TIR_CLAMP)
+  {
+    defines << "#define RF_TIR_CLAMP\n";
+  }
+  if (this->Fresnel)
+  {
+    defines << "#define RF_FRESNEL\n";
+  }
+  if (cube)
+  {
+    defines << "#define RF_ENV_CUBEMAP\n";
+  }
+  if (this->DepthRangeMode == DEPTH_RANGE_BOUNDS)
+  {
+    defines << "#define RF_DEPTH_RANGE_BOUNDS\n";
+  }
+  if (defines.str() != this->ShaderDefines)
+  {
+    this->ShaderDefines = defines.str();
+    this->ShaderDefinesTime.Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkRefractionPass::GetShaderStageMTime()
+{
+  return this->ShaderDefinesTime.GetMTime();
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionPass::PostReplaceShaderValues(std::string& vertexShader, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
+{
+  (void)vertexShader;
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) || !IsGlass(prop))
+  {
+    return true;
+  }
+  const std::string source = rfRefractionFSSource;
+  const size_t marker = source.find(kImplMarker);
+  std::string declarations = source.substr(0, marker);
+  const std::string refractionBody = source.substr(marker + std::string(kImplMarker).size());
+  vtkShaderProgram::Substitute(declarations, kEnvironmentMarker, rfEnvironmentSource);
+
+  // The mapper declares vertexVC only with lighting, and normalVCVSOutput only with normals
+  // or lighting; otherwise rebuild them from the fragment's coordinates.
+  const bool haveVertexVC = fragmentShader.find("vec4 vertexVC") != std::string::npos;
+  const bool haveNormal = fragmentShader.find("normalVCVSOutput") != std::string::npos;
+  std::ostringstream prelude;
+  prelude << this->ShaderDefines;
+  std::ostringstream body;
+  body << "  {\n"
+       << "    vec3 rfP = " << (haveVertexVC ? "vertexVC.xyz" : "rfReconstructPositionVC()")
+       << ";\n"
+       << "    vec3 rfN = "
+       << (haveNormal ? "normalize(normalVCVSOutput)" : "normalize(cross(dFdx(rfP), dFdy(rfP)))")
+       << ";\n"
+       << "    if (rfStage == RF_STAGE_BACK)\n    {\n"
+       << rfBackCaptureFSSource << "    }\n    else\n    {\n"
+       << refractionBody << "    }\n  }\n";
+
+  const size_t mainPos = fragmentShader.find("void main()");
+  const size_t endPos = fragmentShader.rfind('}');
+  if (mainPos == std::string::npos || endPos == std::string::npos || endPos < mainPos)
+  {
+    vtkErrorMacro("Unexpected fragment shader layout; the glass is drawn unrefracted.");
+    return false;
+  }
+  fragmentShader.insert(endPos, body.str());
+  fragmentShader.insert(mainPos, prelude.str() + declarations);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::UpdateCameraUniforms(vtkOpenGLRenderer* ren)
+{
+  vtkOpenGLCamera* camera = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
+  vtkMatrix4x4* wcvc = nullptr;
+  vtkMatrix3x3* normalMatrix = nullptr;
+  vtkMatrix4x4* vcdc = nullptr;
+  vtkMatrix4x4* wcdc = nullptr;
+  camera->GetKeyMatrices(ren, wcvc, normalMatrix, vcdc, wcdc);
+  // VTK's key matrices are already laid out for glUniformMatrix: pass them as VTK does.
+  this->ProjectionGL->DeepCopy(vcdc);
+  vtkMatrix4x4::Invert(vcdc, this->InverseProjectionGL);
+  // Row-major R (world to view) read as column-major by GLSL is R^T, view to world.
+  vtkMatrix4x4* view = camera->GetViewTransformMatrix();
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      this->ViewToWorld[r * 3 + c] = static_cast<float>(view->GetElement(r, c));
+    }
+  }
+  // The environment's frame, laid out as vtkOpenGLRenderer lays out envMatrix.
+  double up[3];
+  double right[3];
+  double front[3];
+  ren->GetEnvironmentUp(up);
+  ren->GetEnvironmentRight(right);
+  vtkMath::Cross(right, up, front);
+  for (int i = 0; i < 3; ++i)
+  {
+    this->EnvironmentMatrix[i * 3 + 0] = static_cast<float>(right[i]);
+    this->EnvironmentMatrix[i * 3 + 1] = static_cast<float>(up[i]);
+    this->EnvironmentMatrix[i * 3 + 2] = static_cast<float>(front[i]);
+  }
+  this->Parallel = camera->GetParallelProjection() ? 1 : 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper,
+  vtkProp* prop, vtkOpenGLVertexArrayObject*)
+{
+  if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) || !IsGlass(prop) ||
+    this->Stage == STAGE_NONE || !program->IsUniformUsed("rfStage"))
+  {
+    return true;
+  }
+  auto setSampler = [program](const char* name, vtkTextureObject* texture) {
+    if (texture && program->IsUniformUsed(name))
+    {
+      program->SetUniformi(name, texture->GetTextureUnit());
+    }
+  };
+  auto setMatrix3 = [program](const char* name, float* values) {
+    if (program->IsUniformUsed(name))
+    {
+      program->SetUniformMatrix3x3(name, values);
+    }
+  };
+  auto setMatrix4 = [program](const char* name, vtkMatrix4x4* values) {
+    if (program->IsUniformUsed(name))
+    {
+      program->SetUniformMatrix(name, values);
+    }
+  };
+  program->SetUniformi("rfStage", this->Stage);
+  if (program->IsUniformUsed("rfIOR"))
+  {
+    program->SetUniformf("rfIOR", static_cast<float>(GetIndexOfRefraction(prop)));
+  }
+  if (program->IsUniformUsed("rfSearchSteps"))
+  {
+    program->SetUniformi("rfSearchSteps", this->SearchSteps);
+  }
+  if (program->IsUniformUsed("rfParallel"))
+  {
+    program->SetUniformi("rfParallel", this->Parallel);
+  }
+  setMatrix4("rfVCDC", this->ProjectionGL);
+  setMatrix4("rfDCVC", this->InverseProjectionGL);
+  setMatrix3("rfViewToWorld", this->ViewToWorld);
+  setMatrix3("rfEnvMatrix", this->EnvironmentMatrix);
+  if (program->IsUniformUsed("rfViewport"))
+  {
+    // gl_FragCoord counts from the window's corner on screen, from the texture's in our FBOs.
+    const bool onScreen = this->Stage == STAGE_FRONT;
+    const float viewport[4] = { onScreen ? static_cast<float>(this->ViewportOrigin[0]) : 0.f,
+      onScreen ? static_cast<float>(this->ViewportOrigin[1]) : 0.f,
+      static_cast<float>(this->Width), static_cast<float>(this->Height) };
+    program->SetUniform4f("rfViewport", viewport);
+  }
+  if (this->Stage != STAGE_BACK)
+  {
+    setSampler("rfBackNormal", this->BackNormalTexture);
+    setSampler("rfBackDepth", this->BackDepthTexture);
+    setSampler("rfDepthRangeTex",
+      this->ReductionLevels.empty() ? nullptr : this->ReductionLevels.back().Get());
+    if (this->UseEnvironmentCube && program->IsUniformUsed("rfEnvironmentCube"))
+    {
+      program->SetUniformi("rfEnvironmentCube",
+        static_cast<vtkOpenGLTexture*>(this->CurrentEnvironment)->GetTextureUnit());
+    }
+  }
+  if (program->IsUniformUsed("rfDepthRangeBounds"))
+  {
+    const float range[2] = { static_cast<float>(this->BoundsDepthRange[0]),
+      static_cast<float>(this->BoundsDepthRange[1]) };
+    program->SetUniform2f("rfDepthRangeBounds", range);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  if (this->DelegatePass)
+  {
+    this->DelegatePass->ReleaseGraphicsResources(w);
+  }
+  if (this->ReductionQuad)
+  {
+    this->ReductionQuad->ReleaseGraphicsResources(w);
+    this->ReductionQuad.reset();
+  }
+  for (auto* texture : { this->BackNormalTexture.Get(), this->BackDepthTexture.Get(),
+         this->BackZBuffer.Get(), this->DebugTextures[0].Get(), this->DebugTextures[1].Get(),
+         this->DebugZBuffer.Get() })
+  {
+    if (texture)
+    {
+      texture->ReleaseGraphicsResources(w);
+    }
+  }
+  for (auto& level : this->ReductionLevels)
+  {
+    level->ReleaseGraphicsResources(w);
+  }
+  this->ReductionLevels.clear();
+  this->BackNormalTexture = nullptr;
+  this->BackDepthTexture = nullptr;
+  this->BackZBuffer = nullptr;
+  this->DebugTextures[0] = nullptr;
+  this->DebugTextures[1] = nullptr;
+  this->DebugZBuffer = nullptr;
+  if (this->Framebuffer)
+  {
+    this->Framebuffer->ReleaseGraphicsResources(w);
+    this->Framebuffer = nullptr;
+  }
+  this->Width = 0;
+  this->Height = 0;
+}

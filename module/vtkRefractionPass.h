@@ -1,0 +1,226 @@
+/**
+ * @class   vtkRefractionPass
+ * @brief   Renders the actors marked as glass as refractive glass in an ordinary VTK scene.
+ *
+ * The core method is DIR (Oliveira & Brauwers, "Real-Time Refraction Through Deformable
+ * Objects", I3D 2007): the back surface of the glass is captured into a normal and a depth
+ * texture, the min/max back depth is reduced on the GPU, and the front surface refracts the
+ * view ray, finds the exit point with the perspective-correct conservative binary search and
+ * refracts again into the environment. Nothing is precomputed, so any vtkPolyData works,
+ * including one that deforms or is re-contoured every time step.
+ *
+ * Usage:
+ * @code
+ * vtkNew<vtkRefractionPass> glass;         // wraps the usual VTK passes
+ * renderer->SetPass(glass);
+ * vtkRefractionPass::MakeGlass(actor, 1.5); // index of refraction on the actor's keys
+ * @endcode
+ *
+ * The pass wraps a delegate (by default a vtkRenderStepsPass). When the delegate is a
+ * vtkRenderStepsPass the glass is drawn right after the opaque geometry, so translucent
+ * geometry and overlays (scalar bars, text) come after it as usual. Unmarked actors render
+ * exactly as without the pass and are depth-correct against the glass. A renderer without
+ * glass actors costs one loop over its props.
+ *
+ * The environment is the renderer's environment texture when it is a cube map (for example
+ * a vtkEquirectangularToCubeMapTexture), else a built-in sky/ground pattern made in code.
+ */
+#ifndef vtkRefractionPass_h
+#define vtkRefractionPass_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkRenderingRefractionModule.h" // For export macro
+#include "vtkMatrix4x4.h"                 // For members
+#include "vtkNew.h"                       // For members
+#include "vtkSmartPointer.h"              // For members
+
+#include <memory> // For std::unique_ptr
+#include <string> // For members
+#include <vector> // For members
+
+class vtkImageData;
+class vtkInformationDoubleKey;
+class vtkInformationIntegerKey;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkOpenGLRenderer;
+class vtkProp;
+class vtkTexture;
+class vtkTextureObject;
+
+class VTKRENDERINGREFRACTION_EXPORT vtkRefractionPass : public vtkOpenGLRenderPass
+{
+public:
+  static vtkRefractionPass* New();
+  vtkTypeMacro(vtkRefractionPass, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Methods: SIR refracts once into the environment; DIR (default) refracts at two interfaces.
+  enum MethodType
+  {
+    SIR = 0,
+    DIR = 1
+  };
+  /// Where DIR's search range [Zmin, Zmax] comes from.
+  enum DepthRangeType
+  {
+    DEPTH_RANGE_REDUCTION = 0, ///< min/max of the captured back depths, on the GPU
+    DEPTH_RANGE_BOUNDS = 1     ///< the glass actors' bounding boxes (paper, section 5)
+  };
+  /// What happens when the ray cannot leave the glass (total internal reflection).
+  enum TIRPolicyType
+  {
+    TIR_CLAMP = 0,  ///< the paper's policy: clamp to the critical angle (tangent exit)
+    TIR_REFLECT = 1 ///< reflect once, then leave into the environment
+  };
+
+  ///@{
+  /// Per-actor glass settings, stored on the prop's property keys.
+  static vtkInformationIntegerKey* GLASS();
+  static vtkInformationDoubleKey* INDEX_OF_REFRACTION();
+  ///@}
+
+  /**
+   * Mark a prop as glass with an index of refraction (1.5 by default). An invalid index
+   * (not finite, or <= 0) is reported and the prop is left unmarked. Returns success.
+   */
+  static bool MakeGlass(vtkProp* prop, double indexOfRefraction = 1.5);
+  /// Unmark a prop; it renders as an ordinary actor again.
+  static void ClearGlass(vtkProp* prop);
+  /// True when the prop is marked as glass.
+  static bool IsGlass(vtkProp* prop);
+  /// The prop's index of refraction (1.5 when the prop has none set).
+  static double GetIndexOfRefraction(vtkProp* prop);
+
+  ///@{
+  /// The passes that render everything else. Default: a vtkRenderStepsPass.
+  void SetDelegatePass(vtkRenderPass* delegatePass);
+  vtkGetObjectMacro(DelegatePass, vtkRenderPass);
+  ///@}
+
+  ///@{
+  /// Refraction method (DIR by default).
+  vtkSetClampMacro(Method, int, SIR, DIR);
+  vtkGetMacro(Method, int);
+  ///@}
+
+  ///@{
+  /// Steps of the conservative binary search (0..16, default 5 as in the paper).
+  /// The exit point is within 0.5^steps of the search segment's length.
+  void SetSearchSteps(int steps);
+  vtkGetMacro(SearchSteps, int);
+  ///@}
+
+  ///@{
+  /// Source of DIR's depth range (reduction pass by default).
+  vtkSetClampMacro(DepthRangeMode, int, DEPTH_RANGE_REDUCTION, DEPTH_RANGE_BOUNDS);
+  vtkGetMacro(DepthRangeMode, int);
+  ///@}
+
+  ///@{
+  /// Total internal reflection policy at the exit (TIR_CLAMP by default, as the paper).
+  vtkSetClampMacro(TIRPolicy, int, TIR_CLAMP, TIR_REFLECT);
+  vtkGetMacro(TIRPolicy, int);
+  ///@}
+
+  ///@{
+  /// Blend reflection and refraction with the exact dielectric Fresnel term (on by default).
+  vtkSetMacro(Fresnel, bool);
+  vtkGetMacro(Fresnel, bool);
+  vtkBooleanMacro(Fresnel, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Debug output: when on, every render also writes, per pixel of the glass, the exit point
+   * P2 (view space), the exit direction T2 (view space) and the thickness |P2 - P1| into
+   * GetDebugImage(): point arrays "P2" (3), "T2" (3), "Thickness" (1) and "Flags" (1: 0 no
+   * glass, 1 glass, 2 glass with total internal reflection at the exit).
+   */
+  vtkSetMacro(DebugOutput, bool);
+  vtkGetMacro(DebugOutput, bool);
+  vtkBooleanMacro(DebugOutput, bool);
+  vtkImageData* GetDebugImage();
+  ///@}
+
+  /// Number of glass props drawn by the last render.
+  vtkGetMacro(NumberOfGlassProps, int);
+
+  void Render(const vtkRenderState* s) override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* vao = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override;
+
+protected:
+  vtkRefractionPass();
+  ~vtkRefractionPass() override;
+
+  enum StageType
+  {
+    STAGE_NONE = 0,
+    STAGE_BACK = 1,
+    STAGE_FRONT = 2,
+    STAGE_DEBUG = 3
+  };
+
+  void RenderOpaqueAndGlass(const vtkRenderState* s);
+  void RenderGlass(const vtkRenderState* s, std::vector<vtkProp*>& glass);
+  void SplitProps(const vtkRenderState* s, std::vector<vtkProp*>& glass,
+    std::vector<vtkProp*>* others);
+  void RenderProps(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& props);
+  void AllocateTextures(vtkOpenGLRenderWindow* renWin, int width, int height);
+  void CaptureBackSurface(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass);
+  void ReduceDepthRange(vtkOpenGLRenderWindow* renWin);
+  void ComputeBoundsDepthRange(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass);
+  void RenderDebugImage(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass);
+  void UpdateShaderDefines(vtkOpenGLRenderer* ren);
+  void UpdateCameraUniforms(vtkOpenGLRenderer* ren);
+
+  vtkRenderPass* DelegatePass = nullptr;
+  vtkSmartPointer<vtkRenderPass> OpaqueDelegate;
+  bool InsideSteps = false;
+
+  int Method = DIR;
+  int SearchSteps = 5;
+  int DepthRangeMode = DEPTH_RANGE_REDUCTION;
+  int TIRPolicy = TIR_CLAMP;
+  bool Fresnel = true;
+  bool DebugOutput = false;
+  int NumberOfGlassProps = 0;
+
+  int Stage = STAGE_NONE;
+  int Width = 0;
+  int Height = 0;
+  int ViewportOrigin[2] = { 0, 0 };
+  double BoundsDepthRange[2] = { 0.0, 0.0 };
+  bool UseEnvironmentCube = false;
+  vtkTexture* CurrentEnvironment = nullptr;
+  vtkNew<vtkMatrix4x4> ProjectionGL;
+  vtkNew<vtkMatrix4x4> InverseProjectionGL;
+  float ViewToWorld[9] = { 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f };
+  float EnvironmentMatrix[9] = { 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f };
+  int Parallel = 0;
+  std::string ShaderDefines;
+  vtkTimeStamp ShaderDefinesTime;
+
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkSmartPointer<vtkTextureObject> BackNormalTexture;
+  vtkSmartPointer<vtkTextureObject> BackDepthTexture;
+  vtkSmartPointer<vtkTextureObject> BackZBuffer;
+  std::vector<vtkSmartPointer<vtkTextureObject>> ReductionLevels;
+  std::unique_ptr<vtkOpenGLQuadHelper> ReductionQuad;
+  vtkSmartPointer<vtkTextureObject> DebugTextures[2];
+  vtkSmartPointer<vtkTextureObject> DebugZBuffer;
+  vtkSmartPointer<vtkImageData> DebugImage;
+
+private:
+  vtkRefractionPass(const vtkRefractionPass&) = delete;
+  void operator=(const vtkRefractionPass&) = delete;
+};
+
+#endif

@@ -1,0 +1,7 @@
+// DIR pass 1 (Oliveira & Brauwers 2007, section 3.1): capture the back surface.
+// Drawn with GL_GREATER and depth cleared to 0, so the furthest surface of the glass wins
+// whatever the mesh's winding; empty texels keep 0, which is what the search tests against.
+// Inputs: rfP (view-space position), rfN (view-space shading normal).
+    vec3 rfOutward = dot(rfN, rfViewDirection(rfP)) < 0.0 ? -rfN : rfN;
+    gl_FragData[0] = vec4(rfOutward, 1.0);
+    gl_FragData[1] = vec4(-rfP.z, 0.0, 0.0, 1.0);

@@ -1,0 +1,315 @@
+/* Unit tests of rf_dir_search (paper sections 3.2-3.3) against numbers
+ * worked out by hand. */
+#include "rf_dir_search.h"
+
+#include "rf_test.h"
+
+#include <math.h>
+#include <string.h>
+
+/* OpenGL perspective projection, fovy 90 degrees, aspect 1, near 1, far 100,
+ * row-major. f = 1 / tan(45 deg) = 1:
+ *   [ f/aspect 0  0                0               ]   [ 1 0  0        0       ]
+ *   [ 0        f  0                0               ] = [ 0 1  0        0       ]
+ *   [ 0        0  (far+near)/(near-far) 2 far near/(near-far) ]  [ 0 0 -101/99 -200/99 ]
+ *   [ 0        0  -1               0               ]   [ 0 0 -1        0       ]
+ * so a view point p projects to t' = (0.5 p.x / -p.z + 0.5, 0.5 p.y / -p.z + 0.5). */
+static void make_projection(double m[16])
+{
+  const double values[16] = { 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, -101.0 / 99.0,
+    -200.0 / 99.0, 0.0, 0.0, -1.0, 0.0 };
+  memcpy(m, values, sizeof(values));
+}
+
+/* The projection above, written directly (independent of the code under test). */
+static void hand_texcoord(rf_vec3 p, double tc[2])
+{
+  tc[0] = 0.5 * p.x / -p.z + 0.5;
+  tc[1] = 0.5 * p.y / -p.z + 0.5;
+}
+
+/* The hand-worked ray used throughout:
+ *   P1 = (0.1, -0.2, -2), T1 = (0.48, 0.36, -0.8) (unit: 0.2304 + 0.1296 + 0.64 = 1),
+ *   depth_min = 4, depth_max = 6, so Zmin = -4, Zmax = -6.
+ *   T1 / T1.z = (-0.6, -0.45, 1).
+ *   S = P1 + (-4 + 2)(-0.6, -0.45, 1) = P1 + (1.2, 0.9, -2) = (1.3, 0.7, -4)   (eq. 3)
+ *   E = P1 + (-6 + 2)(-0.6, -0.45, 1) = P1 + (2.4, 1.8, -4) = (2.5, 1.6, -6)   (eq. 4)
+ *   k1 = 1 / S.z = -0.25;  k2 = S.z E.z / (S.z - E.z) = 24 / 2 = 12           (eq. 9)
+ *   t'_s = (0.5 * 1.3/4 + 0.5, 0.5 * 0.7/4 + 0.5) = (0.6625, 0.5875)
+ *   t'_e = (0.5 * 2.5/6 + 0.5, 0.5 * 1.6/6 + 0.5) = (0.708333..., 0.633333...) (eq. 10)
+ * Along it -P.z = 4 + 2 beta (eq. 5), so a back plane at depth d is crossed at
+ * beta_true = (d - 4) / 2. */
+static const rf_vec3 hand_P1 = { 0.1, -0.2, -2.0 };
+static const rf_vec3 hand_T1 = { 0.48, 0.36, -0.8 };
+static const double hand_depth_min = 4.0;
+static const double hand_depth_max = 6.0;
+
+static rf_dir_segment hand_segment(void)
+{
+  double projection[16];
+  rf_dir_segment seg;
+  memset(&seg, 0, sizeof(seg));
+  make_projection(projection);
+  CHECK(rf_dir_segment_init(hand_P1, hand_T1, hand_depth_min, hand_depth_max, projection, &seg) ==
+    RF_OK);
+  return seg;
+}
+
+static void test_segment_constants(void)
+{
+  const rf_dir_segment seg = hand_segment();
+  CHECK_NEAR(seg.S.x, 1.3, 1e-14);
+  CHECK_NEAR(seg.S.y, 0.7, 1e-14);
+  CHECK_NEAR(seg.S.z, -4.0, 1e-14);
+  CHECK_NEAR(seg.E.x, 2.5, 1e-14);
+  CHECK_NEAR(seg.E.y, 1.6, 1e-14);
+  CHECK_NEAR(seg.E.z, -6.0, 1e-14);
+  CHECK_NEAR(seg.k1, -0.25, 1e-15);
+  CHECK_NEAR(seg.k2, 12.0, 1e-14);
+  CHECK_NEAR(seg.ts[0], 0.6625, 1e-14);
+  CHECK_NEAR(seg.ts[1], 0.5875, 1e-14);
+  CHECK_NEAR(seg.te[0], 0.5 * 2.5 / 6.0 + 0.5, 1e-14);
+  CHECK_NEAR(seg.te[1], 0.5 * 1.6 / 6.0 + 0.5, 1e-14);
+
+  /* eq. 3-4 only use T1 / T1.z: a non-unit direction gives the same segment. */
+  {
+    double projection[16];
+    rf_dir_segment scaled;
+    make_projection(projection);
+    CHECK(rf_dir_segment_init(hand_P1, rf_vec3_scale(hand_T1, 3.0), hand_depth_min,
+            hand_depth_max, projection, &scaled) == RF_OK);
+    CHECK_NEAR(scaled.E.x, 2.5, 1e-14);
+    CHECK_NEAR(scaled.k2, 12.0, 1e-14);
+  }
+}
+
+static void test_alpha_and_texcoords(void)
+{
+  const rf_dir_segment seg = hand_segment();
+  const double betas[] = { 0.0, 0.1, 0.25, 0.5, 0.75, 0.9, 1.0 };
+  double tc[2];
+  int i;
+  /* eq. 9 is 0 at S and 1 at E, exactly. */
+  CHECK(rf_dir_alpha(&seg, -4.0) == 0.0);
+  CHECK(rf_dir_alpha(&seg, -6.0) == 1.0);
+  CHECK(isnan(rf_dir_alpha(NULL, -5.0)));
+  /* eq. 10 at alpha = 0 and 1 gives t'_s and t'_e. */
+  rf_dir_texcoord(&seg, 0.0, tc);
+  CHECK_NEAR(tc[0], 0.6625, 1e-15);
+  CHECK_NEAR(tc[1], 0.5875, 1e-15);
+  rf_dir_texcoord(&seg, 1.0, tc);
+  CHECK_NEAR(tc[0], 0.5 * 2.5 / 6.0 + 0.5, 1e-15);
+  CHECK_NEAR(tc[1], 0.5 * 1.6 / 6.0 + 0.5, 1e-15);
+
+  /* The 3D midpoint (beta = 0.5) is P = (1.9, 1.15, -5):
+   * alpha = (1/-5 + 0.25) * 12 = 0.6, not 0.5 (perspective), and it projects
+   * to (0.5 * 1.9/5 + 0.5, 0.5 * 1.15/5 + 0.5) = (0.69, 0.615). */
+  CHECK_NEAR(rf_dir_alpha(&seg, -5.0), 0.6, 1e-14);
+  rf_dir_texcoord(&seg, rf_dir_alpha(&seg, -5.0), tc);
+  CHECK_NEAR(tc[0], 0.69, 1e-14);
+  CHECK_NEAR(tc[1], 0.615, 1e-14);
+
+  /* For any beta, texcoord(alpha(P.z)) is the projection of P itself. */
+  for (i = 0; i < (int)(sizeof(betas) / sizeof(betas[0])); ++i)
+  {
+    const rf_vec3 S = { 1.3, 0.7, -4.0 };
+    const rf_vec3 E = { 2.5, 1.6, -6.0 };
+    const rf_vec3 P = rf_vec3_add(rf_vec3_scale(S, 1.0 - betas[i]), rf_vec3_scale(E, betas[i]));
+    double direct[2];
+    hand_texcoord(P, direct);
+    rf_dir_texcoord(&seg, rf_dir_alpha(&seg, P.z), tc);
+    CHECK_NEAR(tc[0], direct[0], 1e-14);
+    CHECK_NEAR(tc[1], direct[1], 1e-14);
+  }
+}
+
+/* A synthetic depth map: a back plane at `depth` inside a disc of the
+ * texture, empty (0) outside, as the first pass would store it. It records
+ * the last coordinate it was asked for, and how many times. */
+typedef struct disc_depth_map
+{
+  double center[2];
+  double radius;
+  double depth;
+  int calls;
+  double last_tc[2];
+} disc_depth_map;
+
+static int inside_disc(const disc_depth_map* map, const double tc[2])
+{
+  const double dx = tc[0] - map->center[0];
+  const double dy = tc[1] - map->center[1];
+  return dx * dx + dy * dy <= map->radius * map->radius;
+}
+
+static double sample_disc(void* context, const double tc[2])
+{
+  disc_depth_map* map = (disc_depth_map*)context;
+  ++map->calls;
+  map->last_tc[0] = tc[0];
+  map->last_tc[1] = tc[1];
+  return inside_disc(map, tc) ? map->depth : 0.0;
+}
+
+static void test_cbs_error_bound(void)
+{
+  const rf_dir_segment seg = hand_segment();
+  const double plane_depths[] = { 4.3, 5.0, 5.3, 5.9 };
+  double expected_bound = 1.0;
+  int c;
+  int p;
+  CHECK(rf_cbs_error_bound(5) == 0.03125); /* the paper's 3.125% after 5 steps */
+  for (c = 0; c <= 10; ++c)
+  {
+    CHECK(rf_cbs_error_bound(c) == expected_bound);
+    for (p = 0; p < (int)(sizeof(plane_depths) / sizeof(plane_depths[0])); ++p)
+    {
+      /* The disc (radius 0.4 about the centre) holds the whole segment
+       * (t'_s and t'_e are within 0.25 of the centre). */
+      disc_depth_map map = { { 0.5, 0.5 }, 0.4, 0.0, 0, { 0.0, 0.0 } };
+      const double beta_true = (plane_depths[p] - 4.0) / 2.0;
+      rf_vec3 P2;
+      double tc[2];
+      double direct[2];
+      double beta = -1.0;
+      map.depth = plane_depths[p];
+      CHECK(rf_dir_cbs(&seg, c, sample_disc, &map, &P2, tc, &beta) == RF_OK);
+      CHECK(map.calls == c);
+      CHECK(fabs(beta - beta_true) <= expected_bound + 1e-12);
+      /* Conservative: never past the surface. */
+      CHECK(beta <= beta_true + 1e-12);
+      /* P2 is the eq. 5 point of beta, and tc its projection. */
+      CHECK_NEAR(P2.x, 1.3 + beta * 1.2, 1e-12);
+      CHECK_NEAR(P2.y, 0.7 + beta * 0.9, 1e-12);
+      CHECK_NEAR(P2.z, -4.0 - beta * 2.0, 1e-12);
+      hand_texcoord(P2, direct);
+      CHECK_NEAR(tc[0], direct[0], 1e-12);
+      CHECK_NEAR(tc[1], direct[1], 1e-12);
+    }
+    expected_bound *= 0.5;
+  }
+  /* With 16 steps and the plane at 5 (beta_true = 0.5 exactly, never
+   * strictly in front), beta = 0.5 - 2^-16 exactly. */
+  {
+    disc_depth_map map = { { 0.5, 0.5 }, 0.4, 5.0, 0, { 0.0, 0.0 } };
+    rf_vec3 P2;
+    double tc[2];
+    double beta;
+    CHECK(rf_dir_cbs(&seg, 16, sample_disc, &map, &P2, tc, &beta) == RF_OK);
+    CHECK(beta == 0.5 - 1.0 / 65536.0);
+  }
+}
+
+static void test_cbs_is_conservative(void)
+{
+  /* The disc of radius 0.22 about (0.5, 0.5) contains t'_s (distance
+   * sqrt(0.1625^2 + 0.0875^2) = 0.1846) but not t'_e (0.2474): the ray
+   * leaves the silhouette before reaching the plane at depth 5.9. */
+  const rf_dir_segment seg = hand_segment();
+  int c;
+  int last_sample_outside = 0;
+  for (c = 0; c <= 10; ++c)
+  {
+    disc_depth_map map = { { 0.5, 0.5 }, 0.22, 5.9, 0, { 0.0, 0.0 } };
+    rf_vec3 P2;
+    double tc[2];
+    double beta;
+    CHECK(inside_disc(&map, seg.ts) && !inside_disc(&map, seg.te));
+    CHECK(rf_dir_cbs(&seg, c, sample_disc, &map, &P2, tc, &beta) == RF_OK);
+    if (c > 0 && !inside_disc(&map, map.last_tc))
+    {
+      ++last_sample_outside;
+    }
+    CHECK(inside_disc(&map, tc));
+    CHECK(sample_disc(&map, tc) > 0.0);
+  }
+  /* The scenario does exercise the silhouette: the last sampled candidate
+   * (what a plain binary search would return, Figure 6) was often outside. */
+  CHECK(last_sample_outside > 0);
+}
+
+static void test_zero_steps(void)
+{
+  const rf_dir_segment seg = hand_segment();
+  disc_depth_map map = { { 0.5, 0.5 }, 0.4, 5.0, 0, { 0.0, 0.0 } };
+  rf_vec3 P2;
+  double tc[2];
+  double beta = -1.0;
+  CHECK(rf_dir_cbs(&seg, 0, sample_disc, &map, &P2, tc, &beta) == RF_OK);
+  CHECK(beta == 0.0);
+  CHECK(P2.x == seg.S.x && P2.y == seg.S.y && P2.z == seg.S.z);
+  CHECK_NEAR(tc[0], 0.6625, 1e-15);
+  CHECK_NEAR(tc[1], 0.5875, 1e-15);
+}
+
+static void test_degenerate_inputs(void)
+{
+  double projection[16];
+  rf_dir_segment seg;
+  rf_dir_segment untouched;
+  const rf_vec3 nan_vector = { NAN, 0.0, -1.0 };
+  make_projection(projection);
+  memset(&seg, 0, sizeof(seg));
+  seg.k1 = 123.0; /* sentinel: errors must leave *seg alone */
+  /* T1 parallel to the image plane: S and E at infinity. */
+  CHECK(rf_dir_segment_init(hand_P1, rf_vec3_make(1.0, 0.0, 0.0), 4.0, 6.0, projection, &seg) ==
+    RF_ERR_DEGENERATE_DIRECTION);
+  CHECK(rf_dir_segment_init(hand_P1, rf_vec3_make(1.0, 0.0, 1e-13), 4.0, 6.0, projection, &seg) ==
+    RF_ERR_DEGENERATE_DIRECTION);
+  CHECK(rf_dir_segment_init(hand_P1, rf_vec3_make(0.0, 0.0, 0.0), 4.0, 6.0, projection, &seg) ==
+    RF_ERR_DEGENERATE_DIRECTION);
+  /* T1 toward the camera. */
+  CHECK(rf_dir_segment_init(hand_P1, rf_vec3_make(0.0, 0.6, 0.8), 4.0, 6.0, projection, &seg) ==
+    RF_ERR_DEGENERATE_DIRECTION);
+  /* Empty and invalid ranges. */
+  CHECK(rf_dir_segment_init(hand_P1, hand_T1, 5.0, 5.0, projection, &seg) == RF_ERR_EMPTY_RANGE);
+  CHECK(rf_dir_segment_init(hand_P1, hand_T1, 6.0, 4.0, projection, &seg) == RF_ERR_EMPTY_RANGE);
+  CHECK(rf_dir_segment_init(hand_P1, hand_T1, 0.0, 4.0, projection, &seg) == RF_ERR_EMPTY_RANGE);
+  /* NaN and infinite inputs. */
+  CHECK(rf_dir_segment_init(nan_vector, hand_T1, 4.0, 6.0, projection, &seg) == RF_ERR_NOT_FINITE);
+  CHECK(rf_dir_segment_init(hand_P1, nan_vector, 4.0, 6.0, projection, &seg) == RF_ERR_NOT_FINITE);
+  CHECK(rf_dir_segment_init(hand_P1, hand_T1, NAN, 6.0, projection, &seg) == RF_ERR_NOT_FINITE);
+  CHECK(rf_dir_segment_init(hand_P1, hand_T1, 4.0, INFINITY, projection, &seg) ==
+    RF_ERR_NOT_FINITE);
+  projection[5] = NAN;
+  CHECK(rf_dir_segment_init(hand_P1, hand_T1, 4.0, 6.0, projection, &seg) == RF_ERR_NOT_FINITE);
+  make_projection(projection);
+  /* A projection whose w = +z puts the range behind the camera plane. */
+  projection[14] = 1.0;
+  CHECK(rf_dir_segment_init(hand_P1, hand_T1, 4.0, 6.0, projection, &seg) ==
+    RF_ERR_DEGENERATE_DIRECTION);
+  make_projection(projection);
+  /* NULL pointers. */
+  CHECK(rf_dir_segment_init(hand_P1, hand_T1, 4.0, 6.0, NULL, &seg) == RF_ERR_NULL_ARGUMENT);
+  CHECK(rf_dir_segment_init(hand_P1, hand_T1, 4.0, 6.0, projection, NULL) == RF_ERR_NULL_ARGUMENT);
+  CHECK(seg.k1 == 123.0);
+
+  untouched = hand_segment();
+  {
+    disc_depth_map map = { { 0.5, 0.5 }, 0.4, 5.0, 0, { 0.0, 0.0 } };
+    rf_vec3 P2;
+    double tc[2];
+    double beta;
+    CHECK(rf_dir_cbs(NULL, 5, sample_disc, &map, &P2, tc, &beta) == RF_ERR_NULL_ARGUMENT);
+    CHECK(rf_dir_cbs(&untouched, 5, NULL, &map, &P2, tc, &beta) == RF_ERR_NULL_ARGUMENT);
+    CHECK(rf_dir_cbs(&untouched, 5, sample_disc, &map, NULL, tc, &beta) == RF_ERR_NULL_ARGUMENT);
+    CHECK(rf_dir_cbs(&untouched, 5, sample_disc, &map, &P2, NULL, &beta) == RF_ERR_NULL_ARGUMENT);
+    CHECK(rf_dir_cbs(&untouched, 5, sample_disc, &map, &P2, tc, NULL) == RF_ERR_NULL_ARGUMENT);
+    CHECK(rf_dir_cbs(&untouched, -1, sample_disc, &map, &P2, tc, &beta) ==
+      RF_ERR_STEPS_OUT_OF_RANGE);
+    CHECK(rf_dir_cbs(&untouched, 17, sample_disc, &map, &P2, tc, &beta) ==
+      RF_ERR_STEPS_OUT_OF_RANGE);
+    CHECK(map.calls == 0);
+  }
+}
+
+int main(void)
+{
+  test_segment_constants();
+  test_alpha_and_texcoords();
+  test_cbs_error_bound();
+  test_cbs_is_conservative();
+  test_zero_steps();
+  test_degenerate_inputs();
+  return RF_TEST_SUMMARY();
+}

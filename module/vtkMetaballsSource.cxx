@@ -22,6 +22,13 @@ namespace
 // Keeps the field finite when a grid point coincides with a ball centre; far
 // below the grid spacing squared, so it does not change the surface.
 constexpr double FieldEpsilon = 1.0e-6;
+
+// Tuned together with the default radius: fully extended, the four default
+// balls are 1.22 apart, enough to be separate blobs (with the inverse-square
+// tails of all four adding up they separate only beyond about 1.0), while the
+// surface reaches 0.77 at most, inside [-0.8,0.8]^3.
+constexpr double ExtendedDistance = 0.75;
+constexpr double SwirlRadius = 0.15;
 }
 
 //------------------------------------------------------------------------------
@@ -30,7 +37,7 @@ vtkMetaballsSource::vtkMetaballsSource()
   , NumberOfBalls(4)
   , NumberOfTimeSteps(60)
   , TimePeriod(1.0)
-  , BallRadius(0.35)
+  , BallRadius(0.30)
   , IsoValue(1.0)
 {
   this->SetNumberOfInputPorts(0);
@@ -40,29 +47,39 @@ vtkMetaballsSource::vtkMetaballsSource()
 void vtkMetaballsSource::ComputeBallCenter(int ball, double time, double center[3]) const
 {
   // One period of the motion is one turn of the phase angle; every term below
-  // uses an integer multiple of it, which is what makes the motion periodic
-  // with period TimePeriod.
+  // uses an integer multiple of it, which makes the motion periodic.
   const double tau = 2.0 * vtkMath::Pi() * time / this->TimePeriod;
-  const int n = this->NumberOfBalls > 0 ? this->NumberOfBalls : 1;
-  const double phase = 2.0 * vtkMath::Pi() * ball / n;
 
-  // Neighbouring balls orbit in opposite directions so they pass through each
-  // other (merge) and then separate (split) rather than turning as a rigid
-  // group.
-  const double spin = (ball % 2 == 0) ? 1.0 : -1.0;
-  const double angle = spin * tau + phase;
-  // The orbit radius breathes twice per period, pulling the group together
-  // into a single blob and pushing it apart again.
-  const double orbit = 0.32 + 0.12 * std::sin(2.0 * tau + phase);
-  // Tilting each orbit plane differently makes the motion three-dimensional.
-  const double tilt = 0.6 * std::cos(phase);
-  const double u = orbit * std::cos(angle);
-  const double v = orbit * std::sin(angle);
-  const double bob = 0.12 * std::sin(3.0 * tau + 2.0 * phase);
+  // The box is tightest along the axes, so balls leave the group along the
+  // cube diagonals, where there is most room; the first four take alternate
+  // corners (a tetrahedron) so that they are as far apart as possible when
+  // they split.
+  static const double corners[8][3] = { { 1, 1, 1 }, { 1, -1, -1 }, { -1, 1, -1 },
+    { -1, -1, 1 }, { -1, -1, -1 }, { -1, 1, 1 }, { 1, -1, 1 }, { 1, 1, -1 } };
+  const double* corner = corners[ball % 8];
+  const double s3 = 1.0 / std::sqrt(3.0);
+  const double dir[3] = { corner[0] * s3, corner[1] * s3, corner[2] * s3 };
+  // An orbit plane perpendicular to the diagonal (no corner is parallel to z).
+  double u[3] = { dir[1], -dir[0], 0.0 };
+  vtkMath::Normalize(u);
+  double v[3];
+  vtkMath::Cross(dir, u, v);
 
-  center[0] = u;
-  center[1] = v * std::cos(tilt) - bob * std::sin(tilt);
-  center[2] = v * std::sin(tilt) + bob * std::cos(tilt);
+  // Extension goes 0 -> 1 -> 0 once a period: at 0 the balls swirl around
+  // each other as one blob, at 1 they sit out towards the corners as separate
+  // blobs. A small stagger makes them leave and rejoin one after another
+  // rather than in lockstep; balls beyond the eighth move in counter-phase.
+  const double stagger = 2.0 * vtkMath::Pi() * (0.07 * ball + (ball >= 8 ? 0.5 : 0.0));
+  const double extension = 0.5 - 0.5 * std::cos(tau + stagger);
+  // Opposite spins and different speeds keep the merged blob churning.
+  const double spin = (ball % 2 == 0 ? 1.0 : -1.0) * (2 + ball % 3);
+  const double angle = spin * tau + 2.0 * vtkMath::Pi() * ball / 8.0;
+  const double reach = ExtendedDistance * extension;
+  const double swirl = SwirlRadius * (1.0 - extension);
+  for (int c = 0; c < 3; ++c)
+  {
+    center[c] = reach * dir[c] + swirl * (std::cos(angle) * u[c] + std::sin(angle) * v[c]);
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -79,8 +79,11 @@ public:
 
   ///@{
   /**
-   * Radius of every ball (default 0.35): the distance at which an isolated
-   * ball's field equals 1.
+   * Radius of every ball (default 0.30): the distance at which an isolated
+   * ball's field equals 1. The paths are tuned for the default; with the
+   * long inverse-square tails, balls much larger than 0.3 never separate
+   * inside the box (already at 0.35 they stay one blob, or reach the edge
+   * if the paths are widened to split them).
    */
   vtkSetClampMacro(BallRadius, double, 1.0e-3, 1.0);
   vtkGetMacro(BallRadius, double);

@@ -37,6 +37,49 @@
 #include <cmath>
 #include <sstream>
 
+// Stands in for a vtkRenderStepsPass's opaque step: it draws the opaque props through the
+// original step, then the glass, so that translucent geometry and overlays come after the
+// glass as they come after opaque geometry. It holds its owner by a plain pointer (the owner
+// detaches it when it goes away), so no reference cycle forms through the steps pass.
+class vtkRefractionOpaqueStep : public vtkRenderPass
+{
+public:
+  static vtkRefractionOpaqueStep* New();
+  vtkTypeMacro(vtkRefractionOpaqueStep, vtkRenderPass);
+
+  void Render(const vtkRenderState* s) override
+  {
+    if (this->Owner)
+    {
+      this->NumberOfRenderedProps = this->Owner->RenderOpaqueAndGlass(s, this->Original);
+    }
+    else if (this->Original)
+    {
+      this->Original->Render(s);
+      this->NumberOfRenderedProps = this->Original->GetNumberOfRenderedProps();
+    }
+  }
+  void ReleaseGraphicsResources(vtkWindow* w) override
+  {
+    if (this->Original)
+    {
+      this->Original->ReleaseGraphicsResources(w);
+    }
+  }
+
+  vtkRefractionPass* Owner = nullptr;
+  vtkSmartPointer<vtkRenderPass> Original;
+
+protected:
+  vtkRefractionOpaqueStep() = default;
+  ~vtkRefractionOpaqueStep() override = default;
+
+private:
+  vtkRefractionOpaqueStep(const vtkRefractionOpaqueStep&) = delete;
+  void operator=(const vtkRefractionOpaqueStep&) = delete;
+};
+vtkStandardNewMacro(vtkRefractionOpaqueStep);
+
 vtkStandardNewMacro(vtkRefractionPass);
 vtkInformationKeyMacro(vtkRefractionPass, GLASS, Integer);
 vtkInformationKeyMacro(vtkRefractionPass, INDEX_OF_REFRACTION, Double);
@@ -87,7 +130,32 @@ vtkRefractionPass::~vtkRefractionPass()
 //------------------------------------------------------------------------------
 void vtkRefractionPass::SetDelegatePass(vtkRenderPass* delegatePass)
 {
+  if (delegatePass == this->DelegatePass)
+  {
+    return;
+  }
+  // Give the previous steps pass its own opaque step back.
+  if (auto* steps = vtkRenderStepsPass::SafeDownCast(this->DelegatePass))
+  {
+    if (this->OpaqueStep && steps->GetOpaquePass() == this->OpaqueStep)
+    {
+      steps->SetOpaquePass(this->OpaqueStep->Original);
+    }
+  }
+  if (this->OpaqueStep)
+  {
+    this->OpaqueStep->Owner = nullptr;
+    this->OpaqueStep = nullptr;
+  }
   vtkSetObjectBodyMacro(DelegatePass, vtkRenderPass, delegatePass);
+  auto* steps = vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
+  if (steps && steps->GetOpaquePass())
+  {
+    this->OpaqueStep = vtkSmartPointer<vtkRefractionOpaqueStep>::New();
+    this->OpaqueStep->Owner = this;
+    this->OpaqueStep->Original = steps->GetOpaquePass();
+    steps->SetOpaquePass(this->OpaqueStep);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -228,46 +296,29 @@ void vtkRefractionPass::Render(const vtkRenderState* s)
 {
   vtkOpenGLClearErrorMacro();
   this->NumberOfRenderedProps = 0;
-  if (this->InsideSteps)
-  {
-    // Called back by the steps pass in place of its opaque pass.
-    this->RenderOpaqueAndGlass(s);
-    return;
-  }
+  this->NumberOfGlassProps = 0;
   if (!this->DelegatePass)
   {
     vtkNew<vtkRenderStepsPass> steps;
     this->SetDelegatePass(steps);
   }
-
-  std::vector<vtkProp*> glass;
-  this->SplitProps(s, glass, nullptr);
-  this->NumberOfGlassProps = static_cast<int>(glass.size());
-  vtkRenderStepsPass* steps = vtkRenderStepsPass::SafeDownCast(this->DelegatePass);
-  if (glass.empty())
+  if (this->OpaqueStep)
   {
-    // Nothing to refract: the delegate alone, as if the pass were not there.
+    // The steps pass calls back RenderOpaqueAndGlass in place of its opaque step.
     this->DelegatePass->Render(s);
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
     return;
   }
-  if (steps && steps->GetOpaquePass())
-  {
-    // Take the place of the opaque step so that translucent geometry and overlays are drawn
-    // after the glass, as they would be after opaque geometry.
-    this->OpaqueDelegate = steps->GetOpaquePass();
-    this->InsideSteps = true;
-    steps->SetOpaquePass(this);
-    steps->Render(s);
-    steps->SetOpaquePass(this->OpaqueDelegate);
-    this->InsideSteps = false;
-    this->OpaqueDelegate = nullptr;
-    this->NumberOfRenderedProps = steps->GetNumberOfRenderedProps();
-    return;
-  }
   // Another kind of delegate: it draws everything but the glass, then the glass goes on top.
+  std::vector<vtkProp*> glass;
   std::vector<vtkProp*> others;
   this->SplitProps(s, glass, &others);
+  if (glass.empty())
+  {
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    return;
+  }
   vtkRenderState othersState(s->GetRenderer());
   othersState.SetFrameBuffer(s->GetFrameBuffer());
   othersState.SetRequiredKeys(s->GetRequiredKeys());
@@ -278,18 +329,25 @@ void vtkRefractionPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-void vtkRefractionPass::RenderOpaqueAndGlass(const vtkRenderState* s)
+int vtkRefractionPass::RenderOpaqueAndGlass(const vtkRenderState* s, vtkRenderPass* opaque)
 {
   std::vector<vtkProp*> glass;
   std::vector<vtkProp*> others;
   this->SplitProps(s, glass, &others);
+  this->NumberOfRenderedProps = 0;
+  if (glass.empty())
+  {
+    opaque->Render(s);
+    return opaque->GetNumberOfRenderedProps();
+  }
   vtkRenderState othersState(s->GetRenderer());
   othersState.SetFrameBuffer(s->GetFrameBuffer());
   othersState.SetRequiredKeys(s->GetRequiredKeys());
   othersState.SetPropArrayAndCount(others.data(), static_cast<int>(others.size()));
-  this->OpaqueDelegate->Render(&othersState);
-  this->NumberOfRenderedProps = this->OpaqueDelegate->GetNumberOfRenderedProps();
+  opaque->Render(&othersState);
+  this->NumberOfRenderedProps = opaque->GetNumberOfRenderedProps();
   this->RenderGlass(s, glass);
+  return this->NumberOfRenderedProps;
 }
 
 //------------------------------------------------------------------------------

@@ -46,6 +46,7 @@ class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
 class vtkProp;
+class vtkRefractionOpaqueStep;
 class vtkTexture;
 class vtkTextureObject;
 
@@ -168,7 +169,8 @@ protected:
     STAGE_DEBUG = 3
   };
 
-  void RenderOpaqueAndGlass(const vtkRenderState* s);
+  friend class vtkRefractionOpaqueStep;
+  int RenderOpaqueAndGlass(const vtkRenderState* s, vtkRenderPass* opaque);
   void RenderGlass(const vtkRenderState* s, std::vector<vtkProp*>& glass);
   void SplitProps(const vtkRenderState* s, std::vector<vtkProp*>& glass,
     std::vector<vtkProp*>* others);
@@ -182,8 +184,7 @@ protected:
   void UpdateCameraUniforms(vtkOpenGLRenderer* ren);
 
   vtkRenderPass* DelegatePass = nullptr;
-  vtkSmartPointer<vtkRenderPass> OpaqueDelegate;
-  bool InsideSteps = false;
+  vtkSmartPointer<vtkRefractionOpaqueStep> OpaqueStep;
 
   int Method = DIR;
   int SearchSteps = 5;

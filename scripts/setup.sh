@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs what the build, the demo and the tests need on Debian bookworm, only what is
+# missing: as root directly, through sudo otherwise. Safe to run again.
+set -euo pipefail
+packages=(cmake g++ make pkg-config libvtk9-dev libglew-dev libegl-dev libegl-mesa0
+  libgl1-mesa-dri xvfb xauth libopenimageio-dev)
+# Debian's Imath CMake package names the PyImath libraries: without them find_package(OpenImageIO) fails.
+packages+=(libimath-dev python3-imath)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "setup: installing ${missing[*]}"
+run=()
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "setup: need root or sudo to install ${missing[*]}" >&2; exit 1; }
+  run=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${run[@]}" apt-get update -qq
+"${run[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

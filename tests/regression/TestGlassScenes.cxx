@@ -1,0 +1,234 @@
+// VTK regression-image tests of the glass: TestGlassScenes CASE -V baseline.png -T outdir
+// Each case also asserts what the picture must show (a test that cannot fail is a defect).
+#include "rfTestScene.h"
+#include "vtkMetaballsSource.h"
+
+#include <vtkConeSource.h>
+#include <vtkCubeSource.h>
+#include <vtkFlyingEdges3D.h>
+#include <vtkRegressionTestImage.h>
+#include <vtkTesting.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+namespace
+{
+// Measured llvmpipe-to-llvmpipe noise is zero (two runs give identical images); VTK's error
+// for a changed picture (SIR against DIR, two time steps) is orders of magnitude above this.
+constexpr double kThreshold = 0.15;
+constexpr int kSize = 160;
+
+void LookAt(vtkRenderer* renderer, double distance, double elevation)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(0.0, 0.0, distance);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->Elevation(elevation);
+  camera->OrthogonalizeViewUp();
+  camera->SetViewAngle(30.0);
+  renderer->ResetCameraClippingRange();
+}
+
+int Finish(int argc, char* argv[], vtkRenderWindow* window)
+{
+  window->Render();
+  const int result = vtkRegressionTestImageThreshold(window, kThreshold);
+  return result == vtkTesting::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+}
+
+int SphereCase(int argc, char* argv[], bool sir)
+{
+  vtkNew<vtkRenderer> renderer;
+  auto sphere = rftest::MakeSphere(1.0, 64);
+  vtkRefractionPass::MakeGlass(sphere, 1.5);
+  renderer->AddActor(sphere);
+  vtkNew<vtkRefractionPass> glass;
+  renderer->SetPass(glass);
+  auto window = rftest::MakeWindow(renderer, kSize, kSize);
+  LookAt(renderer, 5.0, 15.0);
+  window->Render();
+  RF_REQUIRE(glass->GetNumberOfGlassProps() == 1, "the sphere is not drawn as glass");
+  auto dir = rftest::Grab(window);
+  glass->SetMethod(vtkRefractionPass::SIR);
+  window->Render();
+  auto singleInterface = rftest::Grab(window);
+  const double error = rftest::ImageError(dir, singleInterface);
+  std::printf("VTK image error between DIR and SIR: %g\n", error);
+  RF_REQUIRE(error > 50.0 * kThreshold, "SIR and DIR give the same picture (error %g)", error);
+  glass->SetMethod(sir ? vtkRefractionPass::SIR : vtkRefractionPass::DIR);
+  return Finish(argc, argv, window);
+}
+
+int TorusCase(int argc, char* argv[])
+{
+  vtkNew<vtkRenderer> renderer;
+  auto torus = rftest::MakeTorus();
+  torus->RotateX(60.0);
+  vtkRefractionPass::MakeGlass(torus, 1.33);
+  renderer->AddActor(torus);
+  vtkNew<vtkRefractionPass> glass;
+  renderer->SetPass(glass);
+  auto window = rftest::MakeWindow(renderer, kSize, kSize);
+  LookAt(renderer, 4.5, 10.0);
+  return Finish(argc, argv, window);
+}
+
+int IsosurfaceCase(int argc, char* argv[])
+{
+  vtkNew<vtkMetaballsSource> blobs;
+  blobs->SetSampleDimensions(40);
+  vtkNew<vtkFlyingEdges3D> surface;
+  surface->SetInputConnection(blobs->GetOutputPort());
+  surface->SetValue(0, blobs->GetIsoValue());
+  surface->ComputeNormalsOn();
+  auto actor = rftest::MakeActor(surface->GetOutputPort());
+  vtkRefractionPass::MakeGlass(actor, 1.5);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  vtkNew<vtkRefractionPass> glass;
+  renderer->SetPass(glass);
+  auto window = rftest::MakeWindow(renderer, kSize, kSize);
+  surface->UpdateTimeStep(0.0);
+  LookAt(renderer, 5.5, 20.0);
+  window->Render();
+  auto first = rftest::Grab(window);
+  surface->UpdateTimeStep(0.3 * blobs->GetTimePeriod());
+  window->Render();
+  auto second = rftest::Grab(window);
+  const double error = rftest::ImageError(first, second);
+  std::printf("VTK image error between time 0 and time 0.3: %g\n", error);
+  RF_REQUIRE(error > 50.0 * kThreshold, "the isosurface did not change with time (%g)", error);
+  return Finish(argc, argv, window);
+}
+
+// An opaque cube in front of the glass hides it; an opaque cone behind it is hidden by it.
+// Both are unlit and pure-coloured, so their pixels are known exactly.
+int OpaqueOrderCase(int argc, char* argv[])
+{
+  vtkNew<vtkRenderer> renderer;
+  auto sphere = rftest::MakeSphere(1.0, 64);
+  vtkRefractionPass::MakeGlass(sphere, 1.5);
+  vtkNew<vtkCubeSource> cube;
+  cube->SetCenter(0.6, 0.0, 1.5);
+  cube->SetXLength(0.4);
+  cube->SetYLength(0.4);
+  cube->SetZLength(0.4);
+  auto front = rftest::MakeActor(cube->GetOutputPort());
+  front->GetProperty()->LightingOff();
+  front->GetProperty()->SetColor(0.0, 1.0, 0.0);
+  vtkNew<vtkConeSource> cone;
+  cone->SetCenter(-1.2, 0.0, -2.0);
+  cone->SetHeight(1.2);
+  cone->SetRadius(0.5);
+  cone->SetResolution(32);
+  auto back = rftest::MakeActor(cone->GetOutputPort());
+  back->GetProperty()->LightingOff();
+  back->GetProperty()->SetColor(1.0, 0.0, 0.0);
+  renderer->AddActor(sphere);
+  renderer->AddActor(front);
+  renderer->AddActor(back);
+  vtkNew<vtkRefractionPass> glass;
+  renderer->SetPass(glass);
+  auto window = rftest::MakeWindow(renderer, kSize, kSize);
+  LookAt(renderer, 6.0, 0.0);
+  window->Render();
+  auto image = rftest::Grab(window);
+
+  // Project the cube's centre and the point of the cone straight behind the sphere's centre.
+  auto pixelOf = [&](double x, double y, double z, int& px, int& py) {
+    renderer->SetWorldPoint(x, y, z, 1.0);
+    renderer->WorldToDisplay();
+    px = static_cast<int>(renderer->GetDisplayPoint()[0]);
+    py = static_cast<int>(renderer->GetDisplayPoint()[1]);
+  };
+  int cx = 0;
+  int cy = 0;
+  pixelOf(0.6, 0.0, 1.7, cx, cy);
+  const double green = image->GetScalarComponentAsDouble(cx, cy, 0, 1);
+  const double greenRed = image->GetScalarComponentAsDouble(cx, cy, 0, 0);
+  RF_REQUIRE(green == 255.0 && greenRed == 0.0,
+    "the opaque cube in front does not hide the glass at (%d, %d): rgb %g %g", cx, cy, greenRed,
+    green);
+  int bx = 0;
+  int by = 0;
+  pixelOf(-0.8, 0.0, -2.0, bx, by);
+  const double r = image->GetScalarComponentAsDouble(bx, by, 0, 0);
+  const double g = image->GetScalarComponentAsDouble(bx, by, 0, 1);
+  const double b = image->GetScalarComponentAsDouble(bx, by, 0, 2);
+  RF_REQUIRE(!(r == 255.0 && g == 0.0 && b == 0.0),
+    "the opaque cone behind the glass shows through it at (%d, %d)", bx, by);
+  // The cone itself is drawn where the glass does not cover it.
+  bool coneVisible = false;
+  for (int y = 0; y < kSize && !coneVisible; ++y)
+  {
+    for (int x = 0; x < kSize && !coneVisible; ++x)
+    {
+      coneVisible = image->GetScalarComponentAsDouble(x, y, 0, 0) == 255.0 &&
+        image->GetScalarComponentAsDouble(x, y, 0, 1) == 0.0;
+    }
+  }
+  RF_REQUIRE(coneVisible, "the opaque cone is not drawn at all");
+  return Finish(argc, argv, window);
+}
+
+// A renderer with the pass and no glass draws exactly what plain VTK draws.
+int PassThroughCase(int argc, char* argv[])
+{
+  vtkNew<vtkRenderer> renderer;
+  auto sphere = rftest::MakeSphere(1.0, 32);
+  sphere->GetProperty()->SetColor(0.3, 0.6, 0.9);
+  vtkNew<vtkConeSource> cone;
+  cone->SetCenter(1.2, 0.0, 0.0);
+  auto coneActor = rftest::MakeActor(cone->GetOutputPort());
+  renderer->AddActor(sphere);
+  renderer->AddActor(coneActor);
+  auto window = rftest::MakeWindow(renderer, kSize, kSize);
+  LookAt(renderer, 6.0, 10.0);
+  window->Render();
+  auto plain = rftest::Grab(window);
+  vtkNew<vtkRefractionPass> glass;
+  renderer->SetPass(glass);
+  window->Render();
+  auto withPass = rftest::Grab(window);
+  const int worst = rftest::MaxChannelDifference(plain, withPass);
+  RF_REQUIRE(worst == 0, "the pass changes a scene without glass (max difference %d)", worst);
+  // Marking then unmarking an actor returns it to plain rendering.
+  vtkRefractionPass::MakeGlass(sphere, 1.5);
+  window->Render();
+  auto glassImage = rftest::Grab(window);
+  RF_REQUIRE(rftest::MaxChannelDifference(plain, glassImage) > 32, "the sphere did not turn to glass");
+  vtkRefractionPass::ClearGlass(sphere);
+  window->Render();
+  auto cleared = rftest::Grab(window);
+  RF_REQUIRE(rftest::MaxChannelDifference(plain, cleared) == 0, "ClearGlass left a difference");
+  return Finish(argc, argv, window);
+}
+}
+
+int main(int argc, char* argv[])
+{
+  if (argc < 2)
+  {
+    std::fprintf(stderr, "usage: TestGlassScenes sphere|sir|torus|isosurface|opaque|passthrough "
+                         "-V baseline.png -T outdir\n");
+    return EXIT_FAILURE;
+  }
+  const std::string which = argv[1];
+  if (which == "sphere")
+    return SphereCase(argc, argv, false);
+  if (which == "sir")
+    return SphereCase(argc, argv, true);
+  if (which == "torus")
+    return TorusCase(argc, argv);
+  if (which == "isosurface")
+    return IsosurfaceCase(argc, argv);
+  if (which == "opaque")
+    return OpaqueOrderCase(argc, argv);
+  if (which == "passthrough")
+    return PassThroughCase(argc, argv);
+  std::fprintf(stderr, "unknown case %s\n", which.c_str());
+  return EXIT_FAILURE;
+}

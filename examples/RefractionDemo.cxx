@@ -2,18 +2,20 @@
 // the built-in environment, beside an ordinary opaque actor.
 //
 //   RefractionDemo [--frames N] [--size PIXELS] [--out DIR] [--method dir|sir] [--steps N]
-//                  [--environment IMAGE] [--interactive] [--timing-frames N]
+//                  [--environment IMAGE] [--interactive] [--egl] [--timing-frames N]
 //
-// Headless (no DISPLAY, or without --interactive) it writes DIR/frame_0000.png ... and prints
+// Without --interactive it renders off screen (through EGL with --egl: no X server needed,
+// else through an X window, e.g. under xvfb-run), writes DIR/frame_0000.png ... and prints
 // the median frame time of the glass (DIR and SIR) and of a plain render of the same mesh.
 // With --interactive it opens a window: 'm' switches DIR/SIR, '+'/'-' change the search
 // steps, 'a' starts/stops the animation.
 #include "vtkRefractionPass.h"
 #include "vtkMetaballsSource.h"
+#include "vtkRefractionEGL.h"
 #ifdef REFRACTION_HAVE_IO
 #include "vtkRefractionImageIO.h"
 #include "vtkEquirectangularToCubeMapTexture.h"
-#include "vtkTexture.h"
+#include "vtkOpenGLTexture.h"
 #endif
 
 #include <vtkActor.h>
@@ -30,6 +32,7 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
 #include <vtkTimerLog.h>
 #include <vtkWindowToImageFilter.h>
 #include <vtk_glew.h>
@@ -54,6 +57,7 @@ struct Options
   std::string OutDir = "out/demo";
   std::string Environment;
   bool Interactive = false;
+  bool EGL = false;
 };
 
 bool ParseOptions(int argc, char* argv[], Options& o)
@@ -78,6 +82,8 @@ bool ParseOptions(int argc, char* argv[], Options& o)
       o.Environment = argv[++i];
     else if (a == "--interactive")
       o.Interactive = true;
+    else if (a == "--egl")
+      o.EGL = true;
     else
     {
       std::fprintf(stderr, "unknown or incomplete option: %s\n", a.c_str());
@@ -222,7 +228,9 @@ int main(int argc, char* argv[])
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(glassActor);
   renderer->AddActor(coneActor);
-  renderer->SetBackground(0.1, 0.1, 0.12);
+  renderer->GradientBackgroundOn();
+  renderer->SetBackground(0.12, 0.12, 0.14);
+  renderer->SetBackground2(0.35, 0.45, 0.6);
   vtkNew<vtkRefractionPass> glass;
   glass->SetMethod(options.Method == "sir" ? vtkRefractionPass::SIR : vtkRefractionPass::DIR);
   glass->SetSearchSteps(options.Steps);
@@ -239,7 +247,7 @@ int main(int argc, char* argv[])
     }
     else
     {
-      vtkNew<vtkTexture> latLong;
+      vtkNew<vtkOpenGLTexture> latLong;
       latLong->SetInputData(image);
       vtkNew<vtkEquirectangularToCubeMapTexture> cubeMap;
       cubeMap->SetInputTexture(latLong);
@@ -254,19 +262,34 @@ int main(int argc, char* argv[])
   }
 #endif
 
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(options.Size, options.Size);
-  window->SetMultiSamples(0);
-  window->AddRenderer(renderer);
-  if (!options.Interactive)
+  vtkSmartPointer<vtkRenderWindow> window;
+  std::string path = "GLX window";
+  if (options.EGL && !options.Interactive)
   {
-    window->SetOffScreenRendering(1);
+    std::string error;
+    window = vtkRefractionCreateEGLWindow(options.Size, options.Size, &error, &path);
+    if (!window)
+    {
+      std::fprintf(stderr, "EGL: %s\n", error.c_str());
+      return 3;
+    }
   }
+  else
+  {
+    window = vtkSmartPointer<vtkRenderWindow>::New();
+    window->SetSize(options.Size, options.Size);
+    window->SetMultiSamples(0);
+    if (!options.Interactive)
+    {
+      window->SetOffScreenRendering(1);
+    }
+  }
+  window->AddRenderer(renderer);
 
   surface->UpdateTimeStep(0.0);
   renderer->ResetCamera();
   renderer->GetActiveCamera()->Elevation(20.0);
-  renderer->GetActiveCamera()->Dolly(1.3);
+  renderer->GetActiveCamera()->Dolly(1.1);
   renderer->ResetCameraClippingRange();
 
   if (options.Interactive)
@@ -326,9 +349,9 @@ int main(int argc, char* argv[])
   const double sirMs = MedianFrameMilliseconds(window, renderer, options.TimingFrames);
   vtkRefractionPass::ClearGlass(glassActor);
   const double plainMs = MedianFrameMilliseconds(window, renderer, options.TimingFrames);
-  std::printf("median frame time over %d frames at %dx%d, %lld triangles, renderer: %s\n",
+  std::printf("median frame time over %d frames at %dx%d, %lld triangles, %s, renderer: %s\n",
     options.TimingFrames, options.Size, options.Size, static_cast<long long>(triangles),
-    reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+    path.c_str(), reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
   std::printf("  DIR (%d steps)  %8.2f ms  (%.2fx plain)\n", options.Steps, dirMs, dirMs / plainMs);
   std::printf("  SIR             %8.2f ms  (%.2fx plain)\n", sirMs, sirMs / plainMs);
   std::printf("  plain VTK       %8.2f ms\n", plainMs);

@@ -49,7 +49,7 @@ std::string LowerExtension(const std::string& path)
 // 8-bit display format, which is where clamping to [0,1] makes sense.
 bool IsFloatFormat(const std::string& ext)
 {
-  return ext == "exr" || ext == "hdr" || ext == "tif" || ext == "tiff" || ext == "pfm";
+  return ext == "exr" || ext == "hdr" || ext == "tif" || ext == "tiff";
 }
 
 // OIIO keeps a per-thread error when a factory call fails before there is an

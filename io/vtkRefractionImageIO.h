@@ -50,10 +50,12 @@ public:
    * Write the point-data array @a arrayName (nullptr: the active scalars) of
    * a 2D image to @a path, the format following the extension. The array may
    * have 1 to 4 components of any numeric type. Float-capable formats (.exr,
-   * .hdr, .tif, .tiff, .pfm) are written as 32-bit float with the values
+   * .hdr, .tif, .tiff) are written as 32-bit float with the values
    * converted unchanged (no normalisation); other formats (.png, .jpg, ...)
    * are written as 8 bits, unsigned char arrays verbatim and other types
-   * clamped to [0,1] then scaled by 255. Returns false on failure.
+   * clamped to [0,1] then scaled by 255. Radiance .hdr takes 3 components
+   * only and stores shared-exponent RGBE, so it is not an exact round trip.
+   * Returns false on failure.
    */
   static bool WriteImage(
     vtkImageData* image, const char* arrayName, const std::string& path, std::string* error);

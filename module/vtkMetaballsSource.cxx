@@ -95,6 +95,10 @@ int vtkMetaballsSource::RequestInformation(vtkInformation* vtkNotUsed(request),
   outInfo->Set(vtkDataObject::SPACING(), spacing, spacing, spacing);
   outInfo->Set(vtkDataObject::ORIGIN(), -1.0, -1.0, -1.0);
   vtkDataObject::SetPointDataActiveScalarInfo(outInfo, VTK_FLOAT, 1);
+  // Each sample depends on its position only, so pieces can be computed
+  // exactly on their own; without this the executive gives every piece but
+  // the first an empty extent.
+  outInfo->Set(CAN_PRODUCE_SUB_EXTENT(), 1);
 
   // The period end is left out of the steps: it is the same state as t = 0.
   std::vector<double> steps(static_cast<size_t>(this->NumberOfTimeSteps));

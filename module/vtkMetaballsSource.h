@@ -55,7 +55,9 @@ public:
 
   ///@{
   /**
-   * Number of balls (1 to 16, default 4).
+   * Number of balls (1 to 16, default 4). Up to 4 balls the surface stays
+   * inside [-0.8,0.8]^3; more balls make a bigger merged blob, which from
+   * about 9 balls is cut open by the edge of the sampled box.
    */
   vtkSetClampMacro(NumberOfBalls, int, 1, 16);
   vtkGetMacro(NumberOfBalls, int);

@@ -17,6 +17,7 @@
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
@@ -254,6 +255,74 @@ vtkImageData* vtkRefractionPass::GetDebugImage()
 }
 
 //------------------------------------------------------------------------------
+void vtkRefractionPass::StartTimer(int stage)
+{
+  if (!this->GPUTiming || !vtkOpenGLRenderTimer::IsSupported())
+  {
+    return;
+  }
+  auto& timer = this->Timers[stage];
+  if (!timer)
+  {
+    timer.reset(new vtkOpenGLRenderTimer);
+  }
+  if (timer->Ready())
+  {
+    this->StageMilliseconds[stage] = timer->GetElapsedMilliseconds();
+  }
+  if (!timer->Started() || timer->Ready())
+  {
+    timer->Reset();
+    timer->Start();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::StopTimer(int stage)
+{
+  auto& timer = this->Timers[stage];
+  if (this->GPUTiming && timer && timer->Started() && !timer->Stopped())
+  {
+    timer->Stop();
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkRefractionPass::GetStageMilliseconds(int stage)
+{
+  if (stage < 0 || stage >= TIMED_STAGE_COUNT)
+  {
+    return -1.0;
+  }
+  auto& timer = this->Timers[stage];
+  if (timer && timer->Stopped() && timer->Ready())
+  {
+    this->StageMilliseconds[stage] = timer->GetElapsedMilliseconds();
+  }
+  return this->StageMilliseconds[stage];
+}
+
+//------------------------------------------------------------------------------
+unsigned long long vtkRefractionPass::GetTextureBytes() const
+{
+  auto bytes = [](const vtkTextureObject* t, int texelBytes) {
+    return t ? static_cast<unsigned long long>(const_cast<vtkTextureObject*>(t)->GetWidth()) *
+        const_cast<vtkTextureObject*>(t)->GetHeight() * texelBytes
+             : 0ULL;
+  };
+  // RGBA16F normals, R32F depths, a 32-bit depth buffer, RG32F reduction levels.
+  unsigned long long total = bytes(this->BackNormalTexture, 8) +
+    bytes(this->BackDepthTexture, 4) + bytes(this->BackZBuffer, 4);
+  for (const auto& level : this->ReductionLevels)
+  {
+    total += bytes(level, 8);
+  }
+  total += bytes(this->DebugTextures[0], 16) + bytes(this->DebugTextures[1], 16) +
+    bytes(this->DebugZBuffer, 4);
+  return total;
+}
+
+//------------------------------------------------------------------------------
 void vtkRefractionPass::SplitProps(
   const vtkRenderState* s, std::vector<vtkProp*>& glass, std::vector<vtkProp*>* others)
 {
@@ -433,7 +502,10 @@ void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp
 
   if (this->Method == DIR)
   {
+    this->StartTimer(TIMED_BACK_CAPTURE);
     this->CaptureBackSurface(ren, glass);
+    this->StopTimer(TIMED_BACK_CAPTURE);
+    this->StartTimer(TIMED_DEPTH_RANGE);
     if (this->DepthRangeMode == DEPTH_RANGE_REDUCTION)
     {
       this->ReduceDepthRange(renWin);
@@ -442,6 +514,7 @@ void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp
     {
       this->ComputeBoundsDepthRange(ren, glass);
     }
+    this->StopTimer(TIMED_DEPTH_RANGE);
   }
 
   vtkTexture* environment = ren->GetEnvironmentTexture();
@@ -455,7 +528,9 @@ void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp
   this->ReductionLevels.back()->Activate();
 
   this->Stage = STAGE_FRONT;
+  this->StartTimer(TIMED_FRONT);
   this->RenderProps(ren, glass);
+  this->StopTimer(TIMED_FRONT);
   if (this->DebugOutput)
   {
     this->RenderDebugImage(ren, glass);
@@ -932,6 +1007,14 @@ void vtkRefractionPass::ReleaseGraphicsResources(vtkWindow* w)
   {
     this->Framebuffer->ReleaseGraphicsResources(w);
     this->Framebuffer = nullptr;
+  }
+  for (auto& timer : this->Timers)
+  {
+    if (timer)
+    {
+      timer->ReleaseGraphicsResources();
+      timer.reset();
+    }
   }
   this->Width = 0;
   this->Height = 0;

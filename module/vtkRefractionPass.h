@@ -43,6 +43,7 @@ class vtkInformationDoubleKey;
 class vtkInformationIntegerKey;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderTimer;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
 class vtkProp;
@@ -145,6 +146,28 @@ public:
   vtkImageData* GetDebugImage();
   ///@}
 
+  ///@{
+  /**
+   * GPU time of the pass's stages with GL timer queries (GL_TIME_ELAPSED), off by default
+   * since a query costs a little. GetStageMilliseconds returns the last completed
+   * measurement of a stage (-1 when none): call it after the frame has finished (glFinish).
+   */
+  enum TimedStageType
+  {
+    TIMED_BACK_CAPTURE = 0,
+    TIMED_DEPTH_RANGE = 1,
+    TIMED_FRONT = 2,
+    TIMED_STAGE_COUNT = 3
+  };
+  vtkSetMacro(GPUTiming, bool);
+  vtkGetMacro(GPUTiming, bool);
+  vtkBooleanMacro(GPUTiming, bool);
+  double GetStageMilliseconds(int stage);
+  ///@}
+
+  /// Bytes of GPU textures the pass holds (capture, reduction, debug), for memory reports.
+  unsigned long long GetTextureBytes() const;
+
   /// Number of glass props drawn by the last render.
   vtkGetMacro(NumberOfGlassProps, int);
 
@@ -193,6 +216,11 @@ protected:
   bool Fresnel = true;
   bool DebugOutput = false;
   int NumberOfGlassProps = 0;
+  bool GPUTiming = false;
+  std::unique_ptr<vtkOpenGLRenderTimer> Timers[TIMED_STAGE_COUNT];
+  double StageMilliseconds[TIMED_STAGE_COUNT] = { -1.0, -1.0, -1.0 };
+  void StartTimer(int stage);
+  void StopTimer(int stage);
 
   int Stage = STAGE_NONE;
   int Width = 0;

@@ -4,8 +4,6 @@
 set -euo pipefail
 packages=(cmake g++ make pkg-config libvtk9-dev libglew-dev libegl-dev libegl-mesa0
   libgl1-mesa-dri xvfb xauth libopenimageio-dev)
-# Debian's Imath CMake package names the PyImath libraries: without them find_package(OpenImageIO) fails.
-packages+=(libimath-dev python3-imath)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

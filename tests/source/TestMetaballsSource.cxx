@@ -23,6 +23,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -184,6 +185,49 @@ void TestContourOverTime()
     "a time set on the downstream request is not honoured");
 }
 
+// A piece of the output (streaming, parallel) holds exactly the values of the
+// whole output at the same points.
+void TestPieces()
+{
+  const double t = 0.4;
+  vtkNew<vtkMetaballsSource> whole;
+  whole->UpdateTimeStep(t);
+  vtkImageData* all = whole->GetOutput();
+  vtkNew<vtkMetaballsSource> source;
+  std::vector<char> covered(static_cast<size_t>(all->GetNumberOfPoints()), 0);
+  bool same = true;
+  for (int piece = 0; piece < 3; ++piece)
+  {
+    source->UpdateTimeStep(t, piece, 3);
+    vtkImageData* part = source->GetOutput();
+    vtkDataArray* values = part->GetPointData()->GetScalars();
+    int extent[6];
+    part->GetExtent(extent);
+    // Without sub-extent support the first piece would get everything.
+    Check(part->GetNumberOfPoints() > 0 && part->GetNumberOfPoints() < all->GetNumberOfPoints(),
+      "piece " + std::to_string(piece) + " of 3 has " + std::to_string(part->GetNumberOfPoints()) +
+        " points");
+    for (int k = extent[4]; values && k <= extent[5]; ++k)
+    {
+      for (int j = extent[2]; j <= extent[3]; ++j)
+      {
+        for (int i = extent[0]; i <= extent[1]; ++i)
+        {
+          int ijk[3] = { i, j, k };
+          const vtkIdType id = all->ComputePointId(ijk);
+          covered[id] = 1;
+          same = same &&
+            values->GetTuple1(part->ComputePointId(ijk)) ==
+              all->GetPointData()->GetScalars()->GetTuple1(id);
+        }
+      }
+    }
+  }
+  Check(same, "pieces do not match the whole output");
+  Check(std::count(covered.begin(), covered.end(), 1) == all->GetNumberOfPoints(),
+    "the pieces do not cover the whole grid");
+}
+
 // Over the advertised steps the default blobs stay closed and inside
 // [-0.8,0.8]^3, and come apart and together at least once.
 void TestShapeOverPeriod()
@@ -249,6 +293,7 @@ int main()
 {
   TestTimeInformation();
   TestContourOverTime();
+  TestPieces();
   TestShapeOverPeriod();
   if (Failures)
   {

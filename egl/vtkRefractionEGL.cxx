@@ -1,0 +1,116 @@
+#include "vtkRefractionEGL.h"
+
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#include <GL/glew.h>
+#include <dlfcn.h>
+
+#include <sstream>
+
+// VTK calls glewInit after the context is current: answer with the context part alone.
+extern "C" GLenum glewInit(void)
+{
+  using InitFunction = GLenum (*)(void);
+  static InitFunction real = reinterpret_cast<InitFunction>(dlsym(RTLD_NEXT, "glewInit"));
+  const GLenum result = real ? real() : GLEW_ERROR_NO_GL_VERSION;
+  return result == GLEW_ERROR_NO_GLX_DISPLAY ? GLEW_OK : result;
+}
+
+namespace
+{
+EGLDisplay OpenDisplay(std::string& which)
+{
+  auto queryDevices =
+    reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+  auto platformDisplay =
+    reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  if (queryDevices && platformDisplay)
+  {
+    EGLDeviceEXT devices[8];
+    EGLint count = 0;
+    if (queryDevices(8, devices, &count))
+    {
+      for (EGLint i = 0; i < count; ++i)
+      {
+        EGLDisplay display = platformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+        EGLint major = 0;
+        EGLint minor = 0;
+        if (display != EGL_NO_DISPLAY && eglInitialize(display, &major, &minor))
+        {
+          std::ostringstream s;
+          s << "EGL device " << i << " of " << count << ", EGL " << major << "." << minor;
+          which = s.str();
+          return display;
+        }
+      }
+    }
+  }
+  EGLDisplay display = eglGetDisplay(EGL_DEFAULT_DISPLAY);
+  EGLint major = 0;
+  EGLint minor = 0;
+  if (display != EGL_NO_DISPLAY && eglInitialize(display, &major, &minor))
+  {
+    std::ostringstream s;
+    s << "EGL default display, EGL " << major << "." << minor;
+    which = s.str();
+    return display;
+  }
+  return EGL_NO_DISPLAY;
+}
+}
+
+vtkSmartPointer<vtkGenericOpenGLRenderWindow> vtkRefractionCreateEGLWindow(
+  int width, int height, std::string* error, std::string* description)
+{
+  auto fail = [error](const char* message) {
+    if (error)
+    {
+      *error = message;
+    }
+    return vtkSmartPointer<vtkGenericOpenGLRenderWindow>();
+  };
+  if (width < 1 || height < 1)
+  {
+    return fail("EGL window size must be at least 1x1");
+  }
+  std::string which;
+  EGLDisplay display = OpenDisplay(which);
+  if (display == EGL_NO_DISPLAY)
+  {
+    return fail("no EGL display (no GPU device and no default display)");
+  }
+  const EGLint configAttributes[] = { EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RED_SIZE, 8,
+    EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8, EGL_DEPTH_SIZE, 24,
+    EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE };
+  EGLConfig config;
+  EGLint configCount = 0;
+  if (!eglChooseConfig(display, configAttributes, &config, 1, &configCount) || configCount < 1)
+  {
+    return fail("no EGL configuration with an OpenGL pbuffer");
+  }
+  const EGLint surfaceAttributes[] = { EGL_WIDTH, width, EGL_HEIGHT, height, EGL_NONE };
+  EGLSurface surface = eglCreatePbufferSurface(display, config, surfaceAttributes);
+  if (surface == EGL_NO_SURFACE || !eglBindAPI(EGL_OPENGL_API))
+  {
+    return fail("cannot create an EGL pbuffer surface for OpenGL");
+  }
+  const EGLint contextAttributes[] = { EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+    EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE };
+  EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttributes);
+  if (context == EGL_NO_CONTEXT || !eglMakeCurrent(display, surface, surface, context))
+  {
+    return fail("cannot create or make current an OpenGL 4.5 core EGL context");
+  }
+  auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  window->SetSize(width, height);
+  window->SetReadyForRendering(true);
+  window->SetIsCurrent(true);
+  window->SetMultiSamples(0);
+  window->InitializeFromCurrentContext();
+  if (description)
+  {
+    const GLubyte* renderer = glGetString(GL_RENDERER);
+    *description = which + ", " + (renderer ? reinterpret_cast<const char*>(renderer) : "?");
+  }
+  return window;
+}

@@ -25,6 +25,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLTexture.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
@@ -163,7 +164,13 @@ void vtkRefractionPass::SetDelegatePass(vtkRenderPass* delegatePass)
 void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Method: " << (this->Method == DIR ? "DIR" : "SIR") << "\n";
+  static const char* const names[] = { "SIR", "DIR", "ISR", "SSP" };
+  os << indent << "Method: " << names[this->Method] << "\n";
+  os << indent << "AdaptiveSearch: " << this->AdaptiveSearch << "\n";
+  os << indent << "SSPStrength: " << this->SSPStrength << "\n";
+  os << indent << "SSPFresnelBias: " << this->SSPFresnelBias << "\n";
+  os << indent << "SSPFresnelPower: " << this->SSPFresnelPower << "\n";
+  os << indent << "ChromaticAberration: " << this->ChromaticAberration << "\n";
   os << indent << "SearchSteps: " << this->SearchSteps << "\n";
   os << indent << "DepthRangeMode: "
      << (this->DepthRangeMode == DEPTH_RANGE_REDUCTION ? "reduction" : "bounds") << "\n";
@@ -500,11 +507,25 @@ void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp
   glassState.SetPropArrayAndCount(glass.data(), static_cast<int>(glass.size()));
   this->PreRender(&glassState);
 
-  if (this->Method == DIR)
+  if (this->Method == ISR)
+  {
+    for (vtkProp* prop : glass)
+    {
+      this->MapISRAttribute(prop);
+    }
+  }
+  if (this->NeedsBackSurface())
   {
     this->StartTimer(TIMED_BACK_CAPTURE);
     this->CaptureBackSurface(ren, glass);
     this->StopTimer(TIMED_BACK_CAPTURE);
+  }
+  if (this->Method == SSP)
+  {
+    this->CaptureSceneForSSP(ren, glass);
+  }
+  if (this->Method == DIR)
+  {
     this->StartTimer(TIMED_DEPTH_RANGE);
     if (this->DepthRangeMode == DEPTH_RANGE_REDUCTION)
     {
@@ -526,6 +547,10 @@ void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp
   this->BackNormalTexture->Activate();
   this->BackDepthTexture->Activate();
   this->ReductionLevels.back()->Activate();
+  if (this->Method == SSP)
+  {
+    this->SceneColorTexture->Activate();
+  }
 
   this->Stage = STAGE_FRONT;
   this->StartTimer(TIMED_FRONT);
@@ -537,6 +562,10 @@ void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp
   }
   this->Stage = STAGE_NONE;
 
+  if (this->Method == SSP)
+  {
+    this->SceneColorTexture->Deactivate();
+  }
   this->ReductionLevels.back()->Deactivate();
   this->BackDepthTexture->Deactivate();
   this->BackNormalTexture->Deactivate();
@@ -678,6 +707,95 @@ void vtkRefractionPass::ComputeBoundsDepthRange(
 }
 
 //------------------------------------------------------------------------------
+void vtkRefractionPass::MapISRAttribute(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  vtkOpenGLPolyDataMapper* mapper =
+    actor ? vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
+  if (!mapper)
+  {
+    return;
+  }
+  for (const auto& mapped : this->ISRMappers)
+  {
+    if (mapped == mapper)
+    {
+      return;
+    }
+  }
+  vtkPolyData* poly = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
+  if (!poly || !poly->GetPointData()->GetArray(GetISRDistanceArrayName()))
+  {
+    vtkWarningMacro("ISR: glass actor " << actor << " has no point array \""
+                                        << GetISRDistanceArrayName()
+                                        << "\" (vtkISRDistanceFilter adds it); using d_N = d_V.");
+  }
+  mapper->MapDataArrayToVertexAttribute("rfNormalDistance", GetISRDistanceArrayName(),
+    vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  this->ISRMappers.erase(std::remove_if(this->ISRMappers.begin(), this->ISRMappers.end(),
+                           [](const vtkWeakPointer<vtkMapper>& m) { return m == nullptr; }),
+    this->ISRMappers.end());
+  this->ISRMappers.emplace_back(mapper);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::CaptureSceneForSSP(
+  vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass)
+{
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  // The chapter's refraction mask, in the alpha channel of the opaque scene: where the glass
+  // is the visible surface, alpha becomes 0.25 + 0.5 alpha (0.75 over an object, 0.25 over
+  // the background); elsewhere it stays 1 (objects, including those in front) or 0.
+  {
+    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+    vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+    ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+    ostate->vtkglDepthMask(GL_FALSE);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_LEQUAL);
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendFuncSeparate(GL_ZERO, GL_ONE, GL_ONE, GL_CONSTANT_ALPHA);
+    glBlendColor(0.f, 0.f, 0.f, 0.5f);
+    this->Stage = STAGE_MASK;
+    this->RenderProps(ren, glass);
+    this->Stage = STAGE_NONE;
+  }
+  if (!this->SceneColorTexture || this->SceneColorTexture->GetWidth() != static_cast<unsigned>(this->Width) ||
+    this->SceneColorTexture->GetHeight() != static_cast<unsigned>(this->Height))
+  {
+    this->SceneColorTexture = vtkSmartPointer<vtkTextureObject>::New();
+    this->SceneColorTexture->SetContext(renWin);
+    this->SceneColorTexture->SetInternalFormat(GL_RGBA8);
+    this->SceneColorTexture->SetFormat(GL_RGBA);
+    this->SceneColorTexture->SetDataType(GL_UNSIGNED_BYTE);
+    this->SceneColorTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    this->SceneColorTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    this->SceneColorTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    this->SceneColorTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    this->SceneColorTexture->Allocate2D(this->Width, this->Height, 4, VTK_UNSIGNED_CHAR);
+  }
+  // Copy the viewport of the scene (colour and mask) into the texture the glass samples.
+  this->Framebuffer->SaveCurrentBindingsAndBuffers();
+  this->Framebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  this->Framebuffer->AddColorAttachment(0, this->SceneColorTexture);
+  this->Framebuffer->ActivateDrawBuffers(1);
+  {
+    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+    ostate->vtkglScissor(0, 0, this->Width, this->Height);
+    ostate->vtkglBlitFramebuffer(this->ViewportOrigin[0], this->ViewportOrigin[1],
+      this->ViewportOrigin[0] + this->Width, this->ViewportOrigin[1] + this->Height, 0, 0,
+      this->Width, this->Height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+  this->Framebuffer->UnBind(GL_DRAW_FRAMEBUFFER);
+  this->Framebuffer->RestorePreviousBindingsAndBuffers();
+}
+
+//------------------------------------------------------------------------------
 void vtkRefractionPass::RenderDebugImage(
   vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass)
 {
@@ -782,9 +900,12 @@ void vtkRefractionPass::UpdateShaderDefines(vtkOpenGLRenderer* ren)
   this->UseEnvironmentCube = cube;
   std::ostringstream defines;
   defines << "#define RF_MAX_SEARCH_STEPS " << RF_CBS_MAX_STEPS << "\n";
-  if (this->Method == DIR)
+  static const char* const methodDefines[] = { "RF_METHOD_SIR", "RF_METHOD_DIR",
+    "RF_METHOD_ISR", "RF_METHOD_SSP" };
+  defines << "#define " << methodDefines[this->Method] << "\n";
+  if (this->AdaptiveSearch)
   {
-    defines << "#define RF_METHOD_DIR\n";
+    defines << "#define RF_ADAPTIVE_SEARCH\n";
   }
   if (this->TIRPolicy == TIR_CLAMP)
   {
@@ -819,7 +940,6 @@ vtkMTimeType vtkRefractionPass::GetShaderStageMTime()
 bool vtkRefractionPass::PostReplaceShaderValues(std::string& vertexShader, std::string&,
   std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  (void)vertexShader;
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) || !IsGlass(prop))
   {
     return true;
@@ -836,6 +956,10 @@ bool vtkRefractionPass::PostReplaceShaderValues(std::string& vertexShader, std::
   const bool haveNormal = fragmentShader.find("normalVCVSOutput") != std::string::npos;
   std::ostringstream prelude;
   prelude << this->ShaderDefines;
+  if (this->Method == ISR)
+  {
+    prelude << "in float rfNormalDistanceVSOut;\n";
+  }
   std::ostringstream body;
   body << "  {\n"
        << "    vec3 rfP = " << (haveVertexVC ? "vertexVC.xyz" : "rfReconstructPositionVC()")
@@ -856,6 +980,20 @@ bool vtkRefractionPass::PostReplaceShaderValues(std::string& vertexShader, std::
   }
   fragmentShader.insert(endPos, body.str());
   fragmentShader.insert(mainPos, prelude.str() + declarations);
+
+  if (this->Method == ISR)
+  {
+    // d_N travels as a generic vertex attribute (MapISRAttribute) to a varying.
+    const size_t vsMain = vertexShader.find("void main()");
+    const size_t vsOpen = vsMain == std::string::npos ? vsMain : vertexShader.find('{', vsMain);
+    if (vsOpen == std::string::npos)
+    {
+      vtkErrorMacro("Unexpected vertex shader layout; ISR falls back to d_N = d_V.");
+      return false;
+    }
+    vertexShader.insert(vsOpen + 1, "\n  rfNormalDistanceVSOut = rfNormalDistance;\n");
+    vertexShader.insert(vsMain, "in float rfNormalDistance;\nout float rfNormalDistanceVSOut;\n");
+  }
   return true;
 }
 
@@ -961,6 +1099,37 @@ bool vtkRefractionPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstra
         static_cast<vtkOpenGLTexture*>(this->CurrentEnvironment)->GetTextureUnit());
     }
   }
+  if (program->IsUniformUsed("rfHaveNormalDistance"))
+  {
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    vtkPolyData* poly = vtkPolyData::SafeDownCast(
+      vtkOpenGLPolyDataMapper::SafeDownCast(mapper)->GetInputDataObject(0, 0));
+    const bool have = poly && poly->GetPointData()->GetArray(GetISRDistanceArrayName());
+    program->SetUniformi("rfHaveNormalDistance", have ? 1 : 0);
+    // d_N is measured in model coordinates: scale it with the actor.
+    double scale = 1.0;
+    if (actor)
+    {
+      vtkMatrix4x4* m = actor->GetMatrix();
+      double columns[3] = { 0.0, 0.0, 0.0 };
+      for (int c = 0; c < 3; ++c)
+      {
+        columns[c] = std::sqrt(m->GetElement(0, c) * m->GetElement(0, c) +
+          m->GetElement(1, c) * m->GetElement(1, c) + m->GetElement(2, c) * m->GetElement(2, c));
+      }
+      scale = std::cbrt(columns[0] * columns[1] * columns[2]);
+    }
+    program->SetUniformf("rfModelScale", static_cast<float>(scale));
+  }
+  if (program->IsUniformUsed("rfSceneColor") && this->SceneColorTexture)
+  {
+    program->SetUniformi("rfSceneColor", this->SceneColorTexture->GetTextureUnit());
+    program->SetUniformf("rfSSPStrength", static_cast<float>(this->SSPStrength));
+    program->SetUniformf("rfSSPFresnelBias", static_cast<float>(this->SSPFresnelBias));
+    program->SetUniformf("rfSSPFresnelPower", static_cast<float>(this->SSPFresnelPower));
+    program->SetUniformf("rfChromaticAberration", static_cast<float>(this->ChromaticAberration));
+    program->SetUniformi("rfSSPMask", this->SSPRefractionMask ? 1 : 0);
+  }
   if (program->IsUniformUsed("rfDepthRangeBounds"))
   {
     const float range[2] = { static_cast<float>(this->BoundsDepthRange[0]),
@@ -1003,6 +1172,11 @@ void vtkRefractionPass::ReleaseGraphicsResources(vtkWindow* w)
   this->DebugTextures[0] = nullptr;
   this->DebugTextures[1] = nullptr;
   this->DebugZBuffer = nullptr;
+  if (this->SceneColorTexture)
+  {
+    this->SceneColorTexture->ReleaseGraphicsResources(w);
+    this->SceneColorTexture = nullptr;
+  }
   if (this->Framebuffer)
   {
     this->Framebuffer->ReleaseGraphicsResources(w);

@@ -33,6 +33,7 @@
 #include "vtkMatrix4x4.h"                 // For members
 #include "vtkNew.h"                       // For members
 #include "vtkSmartPointer.h"              // For members
+#include "vtkWeakPointer.h"               // For members
 
 #include <memory> // For std::unique_ptr
 #include <string> // For members
@@ -46,6 +47,7 @@ class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderTimer;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
+class vtkMapper;
 class vtkProp;
 class vtkRefractionOpaqueStep;
 class vtkTexture;
@@ -58,12 +60,23 @@ public:
   vtkTypeMacro(vtkRefractionPass, vtkOpenGLRenderPass);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// Methods: SIR refracts once into the environment; DIR (default) refracts at two interfaces.
+  /**
+   * Methods. SIR refracts once into the environment. DIR (default) refracts at two
+   * interfaces, the exit found by searching the captured back surface. ISR (Wyman 2005)
+   * estimates the exit distance from d_V and a per-vertex d_N (point array
+   * "ISRNormalDistance", e.g. from vtkISRDistanceFilter; without it d_N = d_V). SSP (Sousa,
+   * GPU Gems 2 ch. 19) perturbs the screen position of the opaque scene behind the glass by
+   * the normal, with the chapter's refraction mask so that objects in front do not leak in.
+   */
   enum MethodType
   {
     SIR = 0,
-    DIR = 1
+    DIR = 1,
+    ISR = 2,
+    SSP = 3
   };
+  /// The point array ISR reads d_N from.
+  static const char* GetISRDistanceArrayName() { return "ISRNormalDistance"; }
   /// Where DIR's search range [Zmin, Zmax] comes from.
   enum DepthRangeType
   {
@@ -103,7 +116,7 @@ public:
 
   ///@{
   /// Refraction method (DIR by default).
-  vtkSetClampMacro(Method, int, SIR, DIR);
+  vtkSetClampMacro(Method, int, SIR, SSP);
   vtkGetMacro(Method, int);
   ///@}
 
@@ -112,6 +125,35 @@ public:
   /// The exit point is within 0.5^steps of the search segment's length.
   void SetSearchSteps(int steps);
   vtkGetMacro(SearchSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * Adaptive search (off by default): per pixel, the number of search steps is the number
+   * needed to tell apart the texels the search segment covers on screen,
+   * ceil(log2(projected length in texels)), capped by SearchSteps.
+   */
+  vtkSetMacro(AdaptiveSearch, bool);
+  vtkGetMacro(AdaptiveSearch, bool);
+  vtkBooleanMacro(AdaptiveSearch, bool);
+  ///@}
+
+  ///@{
+  /// SSP: perturbation of the screen position by the view-space normal (default 0.05, the
+  /// chapter's value), Fresnel bias and power (0.4 and 5, the chapter's glass), and chromatic
+  /// aberration (relative spread of the red and blue offsets; 0 = none).
+  vtkSetClampMacro(SSPStrength, double, 0.0, 1.0);
+  vtkGetMacro(SSPStrength, double);
+  vtkSetClampMacro(SSPFresnelBias, double, 0.0, 1.0);
+  vtkGetMacro(SSPFresnelBias, double);
+  vtkSetClampMacro(SSPFresnelPower, double, 0.0, 64.0);
+  vtkGetMacro(SSPFresnelPower, double);
+  vtkSetClampMacro(ChromaticAberration, double, 0.0, 1.0);
+  vtkGetMacro(ChromaticAberration, double);
+  /// The chapter's refraction mask (on by default); off shows the leaking it prevents.
+  vtkSetMacro(SSPRefractionMask, bool);
+  vtkGetMacro(SSPRefractionMask, bool);
+  vtkBooleanMacro(SSPRefractionMask, bool);
   ///@}
 
   ///@{
@@ -189,7 +231,8 @@ protected:
     STAGE_NONE = 0,
     STAGE_BACK = 1,
     STAGE_FRONT = 2,
-    STAGE_DEBUG = 3
+    STAGE_DEBUG = 3,
+    STAGE_MASK = 4
   };
 
   friend class vtkRefractionOpaqueStep;
@@ -204,6 +247,9 @@ protected:
   void ComputeBoundsDepthRange(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass);
   void RenderDebugImage(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass);
   void UpdateShaderDefines(vtkOpenGLRenderer* ren);
+  void CaptureSceneForSSP(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass);
+  void MapISRAttribute(vtkProp* prop);
+  bool NeedsBackSurface() const { return this->Method == DIR || this->Method == ISR; }
   void UpdateCameraUniforms(vtkOpenGLRenderer* ren);
 
   vtkRenderPass* DelegatePass = nullptr;
@@ -215,6 +261,14 @@ protected:
   int TIRPolicy = TIR_CLAMP;
   bool Fresnel = true;
   bool DebugOutput = false;
+  bool AdaptiveSearch = false;
+  double SSPStrength = 0.05;
+  double SSPFresnelBias = 0.4;
+  double SSPFresnelPower = 5.0;
+  double ChromaticAberration = 0.0;
+  bool SSPRefractionMask = true;
+  std::vector<vtkWeakPointer<vtkMapper>> ISRMappers;
+  vtkSmartPointer<vtkTextureObject> SceneColorTexture;
   int NumberOfGlassProps = 0;
   bool GPUTiming = false;
   std::unique_ptr<vtkOpenGLRenderTimer> Timers[TIMED_STAGE_COUNT];

@@ -1,12 +1,14 @@
-// DIR pass 3 (Oliveira & Brauwers 2007, section 3.2-3.3) and SIR: shade the front surface.
+// Shade the front surface: DIR pass 3 (Oliveira & Brauwers 2007, sections 3.2-3.3), SIR,
+// ISR (Wyman 2005, eq. 1-2) and SSP (Sousa, GPU Gems 2 ch. 19).
 // Injected into VTK's polydata fragment shader by vtkRefractionPass. The part before the
 // RF::Impl marker goes before main(), the part after it at the end of main().
-// Defines set by the pass: RF_METHOD_DIR, RF_TIR_CLAMP, RF_FRESNEL, RF_ENV_CUBEMAP,
-// RF_DEPTH_RANGE_BOUNDS, RF_MAX_SEARCH_STEPS; RF_POSITION_VC and RF_NORMAL_VC name the
+// Defines set by the pass: RF_METHOD_{SIR,DIR,ISR,SSP}, RF_TIR_CLAMP, RF_FRESNEL,
+// RF_ENV_CUBEMAP, RF_DEPTH_RANGE_BOUNDS, RF_ADAPTIVE_SEARCH, RF_MAX_SEARCH_STEPS; RF_POSITION_VC and RF_NORMAL_VC name the
 // mapper's view-space position and normal.
 #define RF_STAGE_BACK 1
 #define RF_STAGE_FRONT 2
 #define RF_STAGE_DEBUG 3
+#define RF_STAGE_MASK 4
 uniform int rfStage;
 uniform float rfIOR;
 uniform int rfSearchSteps;
@@ -21,6 +23,18 @@ uniform sampler2D rfBackDepth;
 uniform vec2 rfDepthRangeBounds;
 #else
 uniform sampler2D rfDepthRangeTex;
+#endif
+#ifdef RF_METHOD_ISR
+uniform int rfHaveNormalDistance;
+uniform float rfModelScale;
+#endif
+#ifdef RF_METHOD_SSP
+uniform sampler2D rfSceneColor;
+uniform float rfSSPStrength;
+uniform float rfSSPFresnelBias;
+uniform float rfSSPFresnelPower;
+uniform float rfChromaticAberration;
+uniform int rfSSPMask;
 #endif
 #ifdef RF_ENV_CUBEMAP
 uniform samplerCube rfEnvironmentCube;
@@ -106,6 +120,57 @@ float rf_dir_alpha(float k1, float k2, float z)
   return (1.0 / z - k1) * k2;
 }
 
+#if defined(RF_METHOD_DIR) || defined(RF_METHOD_ISR)
+// The exit normal at a texel of the back capture; the entry pixel's own back texel (always
+// covered) stands in when the texel is empty. Returns false without a usable normal.
+bool rfBackNormalAt(vec2 tc, vec3 P1, out vec3 N2)
+{
+  vec4 n = textureLod(rfBackNormal, tc, 0.0);
+  if (!(n.a > 0.0))
+  {
+    n = textureLod(rfBackNormal, rfProjectToTexture(P1), 0.0);
+  }
+  N2 = n.xyz;
+  return n.a > 0.0 && dot(n.xyz, n.xyz) > 0.0;
+}
+#endif
+
+#ifdef RF_METHOD_ISR
+// Wyman's estimate (eq. 1-2): d = (theta_t/theta_i) d_V + (1 - theta_t/theta_i) d_N, d_V
+// along the view ray to the captured back depth, d_N per vertex along the inward normal.
+float rfISRDistance(vec3 P1, vec3 V, vec3 N1, vec3 T1, float eta)
+{
+  float backDepth = textureLod(rfBackDepth, rfProjectToTexture(P1), 0.0).r;
+  float dV = backDepth > 0.0 ? max(backDepth + P1.z, 0.0) / max(-V.z, 1e-6) : 0.0;
+  float thetaI = acos(clamp(-dot(V, N1), -1.0, 1.0));
+  float thetaT = acos(clamp(-dot(T1, N1), -1.0, 1.0));
+  // At normal incidence theta_t/theta_i tends to sin(theta_t)/sin(theta_i) = eta.
+  float ratio = thetaI > 1e-4 ? thetaT / thetaI : eta;
+  float dN = rfHaveNormalDistance == 1 ? rfNormalDistanceVSOut * rfModelScale : dV;
+  return ratio * dV + (1.0 - ratio) * dN;
+}
+#endif
+
+#ifdef RF_METHOD_SSP
+// Sousa's Fresnel approximation (listing 19-3) with the chapter's bias and power.
+float rfSSPFresnel(float NdotV)
+{
+  return max(rfSSPFresnelBias + (1.0 - rfSSPFresnelBias) * pow(1.0 - NdotV, rfSSPFresnelPower), 0.0);
+}
+
+// The opaque scene behind the glass at a perturbed screen position; the refraction mask in
+// alpha (listing 19-2) keeps the unperturbed position where the perturbed one is not glass
+// (an object in front, or outside the glass). Where the glass lies over the background, the
+// environment along the refracted ray stands in for the background's flat colour.
+vec3 rfSSPScene(vec2 own, vec2 perturbed, vec3 T1)
+{
+  vec4 a = textureLod(rfSceneColor, clamp(perturbed, 0.0, 1.0), 0.0);
+  bool glassThere = rfSSPMask == 0 || (a.a > 0.1 && a.a < 0.9);
+  vec4 s = glassThere ? a : textureLod(rfSceneColor, own, 0.0);
+  return s.a < 0.5 ? rfEnvironment(T1) : s.rgb;
+}
+#endif
+
 #ifdef RF_METHOD_DIR
 vec2 rfDepthRange()
 {
@@ -150,9 +215,15 @@ bool rf_dir_cbs(vec3 P1, vec3 T1, vec2 depthRange, out vec3 P2, out vec2 tc)
   vec2 dt = rfProjectToTexture(E) - ts;
   vec3 dv = E - S;
   P2 = S;
+  int steps = rfSearchSteps;
+#ifdef RF_ADAPTIVE_SEARCH
+  // No more halvings than there are texels on the segment to tell apart.
+  float texels = length(dt * rfViewport.zw);
+  steps = min(steps, int(ceil(log2(max(texels, 1.0)))));
+#endif
   for (int i = 0; i < RF_MAX_SEARCH_STEPS; ++i)
   {
-    if (i >= rfSearchSteps)
+    if (i >= steps)
     {
       break;
     }
@@ -170,6 +241,11 @@ bool rf_dir_cbs(vec3 P1, vec3 T1, vec2 depthRange, out vec3 P2, out vec2 tc)
 #endif
 
 //RF::Impl
+    if (rfStage == RF_STAGE_MASK)
+    {
+      gl_FragData[0] = vec4(0.0, 0.0, 0.0, 0.25);
+      return;
+    }
     vec3 rfV = rfViewDirection(rfP);
     vec3 rfN1 = dot(rfN, rfV) > 0.0 ? -rfN : rfN;
     float rfEtaIn = 1.0 / rfIOR;
@@ -178,19 +254,19 @@ bool rf_dir_cbs(vec3 P1, vec3 T1, vec2 depthRange, out vec3 P2, out vec2 tc)
     vec3 rfT2 = rfT1;
     vec3 rfP2 = rfP;
     int rfTIR = 0;
+    vec3 rfN2;
 #ifdef RF_METHOD_DIR
     vec2 rfTC;
-    if (rf_dir_cbs(rfP, rfT1, rfDepthRange(), rfP2, rfTC))
+    if (rf_dir_cbs(rfP, rfT1, rfDepthRange(), rfP2, rfTC) && rfBackNormalAt(rfTC, rfP, rfN2))
     {
-      vec4 rfN2 = textureLod(rfBackNormal, rfTC, 0.0);
-      if (!(rfN2.a > 0.0))
-      {
-        rfN2 = textureLod(rfBackNormal, rfProjectToTexture(rfP), 0.0);
-      }
-      if (rfN2.a > 0.0 && dot(rfN2.xyz, rfN2.xyz) > 0.0)
-      {
-        rfTIR = rfRefractWithPolicy(rfT1, -normalize(rfN2.xyz), rfIOR, rfT2);
-      }
+      rfTIR = rfRefractWithPolicy(rfT1, -normalize(rfN2), rfIOR, rfT2);
+    }
+#endif
+#ifdef RF_METHOD_ISR
+    rfP2 = rfP + rfISRDistance(rfP, rfV, rfN1, rfT1, rfEtaIn) * rfT1;
+    if (rfBackNormalAt(rfProjectToTexture(rfP2), rfP, rfN2))
+    {
+      rfTIR = rfRefractWithPolicy(rfT1, -normalize(rfN2), rfIOR, rfT2);
     }
 #endif
     if (rfStage == RF_STAGE_DEBUG)
@@ -200,11 +276,26 @@ bool rf_dir_cbs(vec3 P1, vec3 T1, vec2 depthRange, out vec3 P2, out vec2 tc)
     }
     else
     {
+#if defined(RF_METHOD_SSP)
+      vec2 rfOwn = (gl_FragCoord.xy - rfViewport.xy) / rfViewport.zw;
+      vec2 rfOffset = rfN1.xy * rfSSPStrength;
+      vec3 rfRefracted = vec3(
+        rfSSPScene(rfOwn, rfOwn + rfOffset * (1.0 + rfChromaticAberration), rfT1).r,
+        rfSSPScene(rfOwn, rfOwn + rfOffset, rfT1).g,
+        rfSSPScene(rfOwn, rfOwn + rfOffset * (1.0 - rfChromaticAberration), rfT1).b);
+#ifdef RF_FRESNEL
+      float rfF = rfSSPFresnel(-dot(rfV, rfN1));
+#else
+      float rfF = 0.0;
+#endif
+      vec3 rfColour = rfF * rfEnvironment(reflect(rfV, rfN1)) + (1.0 - rfF) * rfRefracted;
+#else
 #ifdef RF_FRESNEL
       float rfF = rf_fresnel_dielectric(-dot(rfV, rfN1), rfEtaIn);
 #else
       float rfF = 0.0;
 #endif
       vec3 rfColour = rfF * rfEnvironment(reflect(rfV, rfN1)) + (1.0 - rfF) * rfEnvironment(rfT2);
+#endif
       gl_FragData[0] = vec4(rfColour, 1.0);
     }

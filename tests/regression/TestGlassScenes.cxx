@@ -174,6 +174,101 @@ int OpaqueOrderCase(int argc, char* argv[])
   return Finish(argc, argv, window);
 }
 
+// Screen-space perturbation (Sousa): the glass refracts the opaque scene behind it. An
+// unlit pure-green cube in front of the glass must not leak into the refraction (the
+// chapter's mask); with the mask off it does, which shows that the check can fail.
+int SSPCase(int argc, char* argv[])
+{
+  vtkNew<vtkRenderer> renderer;
+  auto sphere = rftest::MakeSphere(1.0, 64);
+  vtkRefractionPass::MakeGlass(sphere, 1.5);
+  vtkNew<vtkCubeSource> cube;
+  cube->SetCenter(0.75, 0.0, 1.5);
+  cube->SetXLength(0.5);
+  cube->SetYLength(0.5);
+  cube->SetZLength(0.2);
+  auto front = rftest::MakeActor(cube->GetOutputPort());
+  front->GetProperty()->LightingOff();
+  front->GetProperty()->SetColor(0.0, 1.0, 0.0);
+  vtkNew<vtkCubeSource> wall;
+  wall->SetCenter(0.0, 0.0, -2.5);
+  wall->SetXLength(6.0);
+  wall->SetYLength(0.8);
+  wall->SetZLength(0.1);
+  auto back = rftest::MakeActor(wall->GetOutputPort());
+  back->GetProperty()->SetColor(0.2, 0.3, 0.9);
+  renderer->AddActor(sphere);
+  renderer->AddActor(front);
+  renderer->AddActor(back);
+  vtkNew<vtkRefractionPass> glass;
+  glass->SetMethod(vtkRefractionPass::SSP);
+  glass->SetSSPStrength(0.2);
+  renderer->SetPass(glass);
+  auto window = rftest::MakeWindow(renderer, kSize, kSize);
+  LookAt(renderer, 6.0, 0.0);
+
+  // Where the cube itself is drawn: the scene without the glass.
+  sphere->VisibilityOff();
+  window->Render();
+  auto cubeOnly = rftest::Grab(window);
+  sphere->VisibilityOn();
+  auto countLeaks = [&](vtkImageData* image) {
+    int leaks = 0;
+    for (int y = 0; y < kSize; ++y)
+    {
+      for (int x = 0; x < kSize; ++x)
+      {
+        const bool cubeHere = cubeOnly->GetScalarComponentAsDouble(x, y, 0, 1) == 255.0 &&
+          cubeOnly->GetScalarComponentAsDouble(x, y, 0, 0) == 0.0;
+        const double r = image->GetScalarComponentAsDouble(x, y, 0, 0);
+        const double g = image->GetScalarComponentAsDouble(x, y, 0, 1);
+        const double b = image->GetScalarComponentAsDouble(x, y, 0, 2);
+        leaks += (!cubeHere && g > 150.0 && g > 2.0 * r && g > 2.0 * b) ? 1 : 0;
+      }
+    }
+    return leaks;
+  };
+  glass->SSPRefractionMaskOff();
+  window->Render();
+  auto unmasked = rftest::Grab(window);
+  const int unmaskedLeaks = countLeaks(unmasked);
+  glass->SSPRefractionMaskOn();
+  window->Render();
+  auto masked = rftest::Grab(window);
+  const int maskedLeaks = countLeaks(masked);
+  std::printf("green pixels of the front cube inside the glass: %d with the refraction mask, "
+              "%d without\n", maskedLeaks, unmaskedLeaks);
+  RF_REQUIRE(unmaskedLeaks > 20, "the leak check does not see the unmasked leak (%d)", unmaskedLeaks);
+  RF_REQUIRE(maskedLeaks == 0, "the front cube leaks into the refraction (%d pixels)", maskedLeaks);
+  return Finish(argc, argv, window);
+}
+
+// Image-space refraction (Wyman) without d_N falls back to d_N = d_V, and warns.
+int ISRCase(int argc, char* argv[], bool torus)
+{
+  vtkNew<vtkRenderer> renderer;
+  auto actor = torus ? rftest::MakeTorus() : rftest::MakeSphere(1.0, 64);
+  if (torus)
+  {
+    actor->RotateX(60.0);
+  }
+  vtkRefractionPass::MakeGlass(actor, torus ? 1.33 : 1.5);
+  renderer->AddActor(actor);
+  vtkNew<vtkRefractionPass> glass;
+  renderer->SetPass(glass);
+  auto window = rftest::MakeWindow(renderer, kSize, kSize);
+  LookAt(renderer, torus ? 4.5 : 5.0, torus ? 10.0 : 15.0);
+  window->Render();
+  auto dir = rftest::Grab(window);
+  glass->SetMethod(vtkRefractionPass::ISR);
+  window->Render();
+  auto isr = rftest::Grab(window);
+  const double error = rftest::ImageError(dir, isr);
+  std::printf("VTK image error between DIR and ISR: %g\n", error);
+  RF_REQUIRE(error > kThreshold, "ISR draws exactly DIR's picture");
+  return Finish(argc, argv, window);
+}
+
 // A renderer with the pass and no glass draws exactly what plain VTK draws.
 int PassThroughCase(int argc, char* argv[])
 {
@@ -227,6 +322,12 @@ int main(int argc, char* argv[])
     return IsosurfaceCase(argc, argv);
   if (which == "opaque")
     return OpaqueOrderCase(argc, argv);
+  if (which == "ssp")
+    return SSPCase(argc, argv);
+  if (which == "isr_sphere")
+    return ISRCase(argc, argv, false);
+  if (which == "isr_torus")
+    return ISRCase(argc, argv, true);
   if (which == "passthrough")
     return PassThroughCase(argc, argv);
   std::fprintf(stderr, "unknown case %s\n", which.c_str());

@@ -1,16 +1,17 @@
 // The default demo: a time-varying metaball isosurface rendered as refractive glass (DIR) over
 // the built-in environment, beside an ordinary opaque actor.
 //
-//   RefractionDemo [--frames N] [--size PIXELS] [--out DIR] [--method dir|sir] [--steps N]
+//   RefractionDemo [--frames N] [--size PIXELS] [--out DIR] [--method dir|sir|isr|ssp] [--steps N]
 //                  [--environment IMAGE] [--interactive] [--egl] [--timing-frames N]
 //
 // Without --interactive it renders off screen (through EGL with --egl: no X server needed,
 // else through an X window, e.g. under xvfb-run), writes DIR/frame_0000.png ... and prints
-// the median frame time of the glass (DIR and SIR) and of a plain render of the same mesh.
-// With --interactive it opens a window: 'm' switches DIR/SIR, '+'/'-' change the search
-// steps, 'a' starts/stops the animation.
+// the median frame time of the glass (DIR, SIR, ISR, SSP) and of a plain render of the same
+// mesh. With --interactive it opens a window: 'm' cycles DIR/SIR/ISR/SSP, '+'/'-' change the
+// search steps, 'a' starts/stops the animation.
 #include "vtkRefractionPass.h"
 #include "vtkMetaballsSource.h"
+#include "vtkISRDistanceFilter.h"
 #include "vtkRefractionEGL.h"
 #ifdef REFRACTION_HAVE_IO
 #include "vtkRefractionImageIO.h"
@@ -90,9 +91,10 @@ bool ParseOptions(int argc, char* argv[], Options& o)
       return false;
     }
   }
-  if (o.Size < 1 || o.Frames < 0 || o.TimingFrames < 1 || (o.Method != "dir" && o.Method != "sir"))
+  if (o.Size < 1 || o.Frames < 0 || o.TimingFrames < 1 ||
+    (o.Method != "dir" && o.Method != "sir" && o.Method != "isr" && o.Method != "ssp"))
   {
-    std::fprintf(stderr, "bad option value (size >= 1, frames >= 0, method dir|sir)\n");
+    std::fprintf(stderr, "bad option value (size >= 1, frames >= 0, method dir|sir|isr|ssp)\n");
     return false;
   }
   return true;
@@ -129,6 +131,20 @@ double MedianFrameMilliseconds(vtkRenderWindow* window, vtkRenderer* renderer, i
   return times[times.size() / 2];
 }
 
+const char* MethodName(int method)
+{
+  static const char* const names[] = { "SIR", "DIR", "ISR", "SSP" };
+  return names[method];
+}
+
+int MethodFromOption(const std::string& name)
+{
+  return name == "sir" ? vtkRefractionPass::SIR
+                       : name == "isr" ? vtkRefractionPass::ISR
+                                       : name == "ssp" ? vtkRefractionPass::SSP
+                                                       : vtkRefractionPass::DIR;
+}
+
 struct InteractiveState
 {
   vtkRefractionPass* Glass;
@@ -145,9 +161,10 @@ void OnKey(vtkObject* caller, unsigned long, void* clientData, void*)
   const std::string key = interactor->GetKeySym() ? interactor->GetKeySym() : "";
   if (key == "m")
   {
-    state->Glass->SetMethod(
-      state->Glass->GetMethod() == vtkRefractionPass::DIR ? vtkRefractionPass::SIR
-                                                          : vtkRefractionPass::DIR);
+    // DIR -> SIR -> ISR -> SSP -> DIR
+    static const int next[] = { vtkRefractionPass::ISR, vtkRefractionPass::SIR,
+      vtkRefractionPass::SSP, vtkRefractionPass::DIR };
+    state->Glass->SetMethod(next[state->Glass->GetMethod()]);
   }
   else if (key == "plus" || key == "equal")
   {
@@ -165,8 +182,7 @@ void OnKey(vtkObject* caller, unsigned long, void* clientData, void*)
   {
     return;
   }
-  std::printf("method %s, %d search steps, animation %s\n",
-    state->Glass->GetMethod() == vtkRefractionPass::DIR ? "DIR" : "SIR",
+  std::printf("method %s, %d search steps, animation %s\n", MethodName(state->Glass->GetMethod()),
     state->Glass->GetSearchSteps(), state->Animate ? "on" : "off");
   interactor->GetRenderWindow()->Render();
 }
@@ -206,8 +222,11 @@ int main(int argc, char* argv[])
   surface->SetInputConnection(blobs->GetOutputPort());
   surface->SetValue(0, blobs->GetIsoValue());
   surface->ComputeNormalsOn();
+  // d_N for ISR, recomputed whenever the surface changes (DIR needs nothing of the kind).
+  vtkNew<vtkISRDistanceFilter> distances;
+  distances->SetInputConnection(surface->GetOutputPort());
   vtkNew<vtkPolyDataMapper> glassMapper;
-  glassMapper->SetInputConnection(surface->GetOutputPort());
+  glassMapper->SetInputConnection(distances->GetOutputPort());
   glassMapper->ScalarVisibilityOff();
   vtkNew<vtkActor> glassActor;
   glassActor->SetMapper(glassMapper);
@@ -232,7 +251,7 @@ int main(int argc, char* argv[])
   renderer->SetBackground(0.12, 0.12, 0.14);
   renderer->SetBackground2(0.35, 0.45, 0.6);
   vtkNew<vtkRefractionPass> glass;
-  glass->SetMethod(options.Method == "sir" ? vtkRefractionPass::SIR : vtkRefractionPass::DIR);
+  glass->SetMethod(MethodFromOption(options.Method));
   glass->SetSearchSteps(options.Steps);
   renderer->SetPass(glass);
 
@@ -343,10 +362,15 @@ int main(int argc, char* argv[])
   // Frame times at a fixed time step, the camera turning 1 degree a frame.
   surface->UpdateTimeStep(0.25 * blobs->GetTimePeriod());
   const vtkIdType triangles = surface->GetOutput()->GetNumberOfPolys();
-  glass->SetMethod(vtkRefractionPass::DIR);
-  const double dirMs = MedianFrameMilliseconds(window, renderer, options.TimingFrames);
-  glass->SetMethod(vtkRefractionPass::SIR);
-  const double sirMs = MedianFrameMilliseconds(window, renderer, options.TimingFrames);
+  double methodMs[4];
+  for (int method : { vtkRefractionPass::DIR, vtkRefractionPass::SIR, vtkRefractionPass::ISR,
+         vtkRefractionPass::SSP })
+  {
+    glass->SetMethod(method);
+    methodMs[method] = MedianFrameMilliseconds(window, renderer, options.TimingFrames);
+  }
+  const double dirMs = methodMs[vtkRefractionPass::DIR];
+  const double sirMs = methodMs[vtkRefractionPass::SIR];
   vtkRefractionPass::ClearGlass(glassActor);
   const double plainMs = MedianFrameMilliseconds(window, renderer, options.TimingFrames);
   std::printf("median frame time over %d frames at %dx%d, %lld triangles, %s, renderer: %s\n",
@@ -354,6 +378,11 @@ int main(int argc, char* argv[])
     path.c_str(), reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
   std::printf("  DIR (%d steps)  %8.2f ms  (%.2fx plain)\n", options.Steps, dirMs, dirMs / plainMs);
   std::printf("  SIR             %8.2f ms  (%.2fx plain)\n", sirMs, sirMs / plainMs);
+  std::printf("  ISR             %8.2f ms  (%.2fx plain), plus %.2f ms of d_N ray casting each "
+              "time the surface changes\n", methodMs[vtkRefractionPass::ISR],
+    methodMs[vtkRefractionPass::ISR] / plainMs, distances->GetLastComputeSeconds() * 1e3);
+  std::printf("  SSP             %8.2f ms  (%.2fx plain)\n", methodMs[vtkRefractionPass::SSP],
+    methodMs[vtkRefractionPass::SSP] / plainMs);
   std::printf("  plain VTK       %8.2f ms\n", plainMs);
   return 0;
 }

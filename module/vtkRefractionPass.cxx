@@ -964,9 +964,9 @@ bool vtkRefractionPass::PostReplaceShaderValues(std::string& vertexShader, std::
   body << "  {\n"
        << "    vec3 rfP = " << (haveVertexVC ? "vertexVC.xyz" : "rfReconstructPositionVC()")
        << ";\n"
-       << "    vec3 rfN = "
-       << (haveNormal ? "normalize(normalVCVSOutput)" : "normalize(cross(dFdx(rfP), dFdy(rfP)))")
-       << ";\n"
+       // rfSafeNormal: zero or non-finite normals fall back to the face normal (no NaN).
+       << "    vec3 rfN = rfSafeNormal("
+       << (haveNormal ? "normalVCVSOutput" : "vec3(0.0)") << ", rfP);\n"
        << "    if (rfStage == RF_STAGE_BACK)\n    {\n"
        << rfBackCaptureFSSource << "    }\n    else\n    {\n"
        << refractionBody << "    }\n  }\n";

@@ -48,6 +48,28 @@ vec3 rfViewDirection(vec3 p)
   return rfParallel == 1 ? vec3(0.0, 0.0, -1.0) : normalize(p);
 }
 
+// The unit shading normal; where it is zero, tiny or not finite (zero-length normals in the
+// data, opposite normals interpolated to zero) the face normal from the position's
+// derivatives, else the direction toward the eye. normalize() of a zero vector is NaN, and
+// one NaN normal spreads through the filtered back-normal texture to its neighbours.
+// Call in uniform control flow (derivatives).
+vec3 rfSafeNormal(vec3 n, vec3 p)
+{
+  vec3 face = cross(dFdx(p), dFdy(p));
+  float n2 = dot(n, n);
+  if (n2 > 1e-24 && n2 < 1e30)
+  {
+    return n * inversesqrt(n2);
+  }
+  float f2 = dot(face, face);
+  if (f2 > 1e-36 && f2 < 1e30)
+  {
+    return face * inversesqrt(f2);
+  }
+  vec3 v = rfViewDirection(p);
+  return dot(v, v) > 0.0 ? -v : vec3(0.0, 0.0, 1.0);
+}
+
 // The fragment's view-space position from gl_FragCoord, for mappers that declare no vertexVC.
 vec3 rfReconstructPositionVC()
 {
@@ -70,6 +92,12 @@ vec3 rfEnvironment(vec3 directionVC)
 // eta = n_incident / n_transmitted.
 float rf_fresnel_dielectric(float cosIncident, float eta)
 {
+  // Equal indices are no interface: nothing is reflected, even at grazing incidence where
+  // 1 - (1 - c^2) rounds to 0 and the formula below would report TIR.
+  if (eta == 1.0)
+  {
+    return 0.0;
+  }
   float c = clamp(cosIncident, 0.0, 1.0);
   float sin2t = eta * eta * (1.0 - c * c);
   if (sin2t >= 1.0)
@@ -87,6 +115,12 @@ float rf_fresnel_dielectric(float cosIncident, float eta)
 // rf_refract (follow TIR by one reflection). Returns 1 when TIR occurred.
 int rfRefractWithPolicy(vec3 incident, vec3 normal, float eta, out vec3 transmitted)
 {
+  // IOR = 1: the ray goes straight on, exactly (Snell's formula only up to rounding).
+  if (eta == 1.0)
+  {
+    transmitted = incident;
+    return 0;
+  }
   if (dot(incident, normal) > 0.0)
   {
     normal = -normal;
@@ -193,24 +227,80 @@ float rfStoredDepth(vec2 tc)
 // Conservative binary search (algorithm 2) of T1 against the captured back depths; twin of
 // rf_dir_cbs. The search starts at the entry point when it lies beyond Zmin (the part of the
 // segment before P1 cannot hold the exit), which also keeps the start texel valid.
+// The largest t >= 0 for which P + t T stays inside the frustum's side and near planes
+// (clip space -w <= x, y <= w and -w <= z): the part of the ray the depth map can answer for.
+float rfFrustumExit(vec3 P, vec3 T)
+{
+  vec4 c0 = rfVCDC * vec4(P, 1.0);
+  vec4 c1 = rfVCDC * vec4(T, 0.0);
+  vec4 a0 = vec4(c0.w - c0.x, c0.w + c0.x, c0.w - c0.y, c0.w + c0.y);
+  vec4 a1 = vec4(c1.w - c1.x, c1.w + c1.x, c1.w - c1.y, c1.w + c1.y);
+  float t = 1e30;
+  for (int i = 0; i < 4; ++i)
+  {
+    if (a1[i] < 0.0)
+    {
+      t = min(t, max(a0[i], 0.0) / -a1[i]);
+    }
+  }
+  if (c1.w + c1.z < 0.0)
+  {
+    t = min(t, max(c0.w + c0.z, 0.0) / -(c1.w + c1.z));
+  }
+  return t;
+}
+
 bool rf_dir_cbs(vec3 P1, vec3 T1, vec2 depthRange, out vec3 P2, out vec2 tc)
 {
   P2 = P1;
   tc = rfProjectToTexture(P1);
-  if (!(T1.z < -1e-6) || !(depthRange.x <= depthRange.y))
+  if (!(depthRange.x <= depthRange.y))
   {
-    return false;
+    return false; // no back surface captured
   }
-  float zS = -max(depthRange.x, -P1.z);
-  float zE = -depthRange.y;
-  if (!(zE < zS))
+  // The segment as parameters along the unit T1. Eq. 3-4 put S and E on the planes Zmin and
+  // Zmax; as T1.z -> 0 they go to infinity (and k2 of eq. 9 loses its meaning), so E is
+  // clipped where the ray leaves the frustum, and a ray parallel to the image plane (or
+  // turned toward the eye) is searched sideways from P1 at its own depth: the same segment
+  // the clipped eq. 3-4 tend to, so nothing jumps at the threshold.
+  float tFar = rfFrustumExit(P1, T1);
+  float tS = 0.0;
+  float tE = tFar;
+  if (T1.z < -1e-6)
   {
-    return false;
+    tS = max((-depthRange.x - P1.z) / T1.z, 0.0); // eq. 3; from P1 when P1 lies beyond Zmin
+    tE = min((-depthRange.y - P1.z) / T1.z, tFar); // eq. 4
   }
-  vec3 S = P1 + (zS - P1.z) * (T1 / T1.z); // eq. 3
-  vec3 E = P1 + (zE - P1.z) * (T1 / T1.z); // eq. 4
-  float k1 = 1.0 / S.z;                    // eq. 9
-  float k2 = S.z * E.z / (S.z - E.z);
+  if (!(tE < 1e20))
+  {
+    return true; // no frustum plane ahead (rounding): the exit behind the entry point
+  }
+  // S must lie on the glass's back-surface footprint for the search to start there: where it
+  // does not (outside the silhouette or the image) start from P1, which always does.
+  vec3 S = P1 + tS * T1;
+  if (tS > 0.0 && !(tS < tE && rfStoredDepth(rfProjectToTexture(S)) > 0.0))
+  {
+    tS = 0.0;
+    S = P1;
+  }
+  // Zmin = Zmax (a flat back facing the camera, a single back texel), or P1 at or beyond Zmax:
+  // the segment is (nearly) a point and S.z - E.z in k2 (eq. 9) tends to 0. The exit is S;
+  // below a relative length of 1e-6 the search could not move it in float anyway.
+  if (!(tE - tS > 1e-6 * length(S)))
+  {
+    P2 = S;
+    tc = rfProjectToTexture(S);
+    return true;
+  }
+  vec3 E = P1 + tE * T1;
+  // Eq. 9 maps depth to the texture parameter; when the segment's depths (nearly) agree the
+  // projection along it is affine and the parameter is the step fraction itself (also under a
+  // parallel projection).
+  bool rfAffine = rfParallel == 1 || S.z - E.z < 1e-4 * abs(S.z);
+  float k1 = 1.0 / S.z;                                   // eq. 9
+  float k2 = rfAffine ? 0.0 : S.z * E.z / (S.z - E.z);
+  float beta = 0.0;
+  float dbeta = 1.0;
   vec2 ts = rfProjectToTexture(S);
   vec2 dt = rfProjectToTexture(E) - ts;
   vec3 dv = E - S;
@@ -228,11 +318,13 @@ bool rf_dir_cbs(vec3 P1, vec3 T1, vec2 depthRange, out vec3 P2, out vec2 tc)
       break;
     }
     dv *= 0.5;
+    dbeta *= 0.5;
     float z = P2.z + dv.z;
-    float alpha = rfParallel == 1 ? (z - S.z) / (E.z - S.z) : rf_dir_alpha(k1, k2, z);
+    float alpha = rfAffine ? beta + dbeta : rf_dir_alpha(k1, k2, z);
     if (-z < rfStoredDepth(ts + alpha * dt)) // eq. 10; empty texels hold 0 and stop the advance
     {
       P2 += dv;
+      beta += dbeta;
     }
   }
   tc = rfProjectToTexture(P2);
@@ -250,21 +342,23 @@ bool rf_dir_cbs(vec3 P1, vec3 T1, vec2 depthRange, out vec3 P2, out vec2 tc)
     vec3 rfN1 = dot(rfN, rfV) > 0.0 ? -rfN : rfN;
     float rfEtaIn = 1.0 / rfIOR;
     vec3 rfT1;
-    rfRefractWithPolicy(rfV, rfN1, rfEtaIn, rfT1);
-    vec3 rfT2 = rfT1;
+    // IOR < 1 (a bubble): beyond the critical angle the light cannot enter and is totally
+    // reflected outside (flag 3); the clamp policy is for the exit only.
+    bool rfTIRIn = rfRefractWithPolicy(rfV, rfN1, rfEtaIn, rfT1) == 1;
+    vec3 rfT2 = rfTIRIn ? reflect(rfV, rfN1) : rfT1;
     vec3 rfP2 = rfP;
-    int rfTIR = 0;
+    int rfTIR = rfTIRIn ? 2 : 0;
     vec3 rfN2;
 #ifdef RF_METHOD_DIR
     vec2 rfTC;
-    if (rf_dir_cbs(rfP, rfT1, rfDepthRange(), rfP2, rfTC) && rfBackNormalAt(rfTC, rfP, rfN2))
+    if (!rfTIRIn && rf_dir_cbs(rfP, rfT1, rfDepthRange(), rfP2, rfTC) && rfBackNormalAt(rfTC, rfP, rfN2))
     {
       rfTIR = rfRefractWithPolicy(rfT1, -normalize(rfN2), rfIOR, rfT2);
     }
 #endif
 #ifdef RF_METHOD_ISR
-    rfP2 = rfP + rfISRDistance(rfP, rfV, rfN1, rfT1, rfEtaIn) * rfT1;
-    if (rfBackNormalAt(rfProjectToTexture(rfP2), rfP, rfN2))
+    rfP2 = rfTIRIn ? rfP : rfP + rfISRDistance(rfP, rfV, rfN1, rfT1, rfEtaIn) * rfT1;
+    if (!rfTIRIn && rfBackNormalAt(rfProjectToTexture(rfP2), rfP, rfN2))
     {
       rfTIR = rfRefractWithPolicy(rfT1, -normalize(rfN2), rfIOR, rfT2);
     }

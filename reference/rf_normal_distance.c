@@ -1,0 +1,118 @@
+#include "rf_normal_distance.h"
+
+#include <embree3/rtcore.h>
+#include <math.h>
+
+rf_status rf_normal_distances(const float* positions, const float* normals, size_t vertex_count,
+  const unsigned* triangles, size_t triangle_count, float* distances)
+{
+  RTCDevice device;
+  RTCScene scene;
+  RTCGeometry geometry;
+  float* vertex_buffer;
+  unsigned* index_buffer;
+  float extent = 0.0f;
+  float lo[3] = { INFINITY, INFINITY, INFINITY };
+  float hi[3] = { -INFINITY, -INFINITY, -INFINITY };
+  struct RTCIntersectContext context;
+  size_t i;
+  int k;
+
+  if (!positions || !normals || !triangles || !distances)
+  {
+    return RF_ERR_NULL_ARGUMENT;
+  }
+  for (i = 0; i < vertex_count; ++i)
+  {
+    distances[i] = 0.0f;
+  }
+  if (vertex_count == 0 || triangle_count == 0)
+  {
+    return RF_OK;
+  }
+  for (i = 0; i < 3 * vertex_count; ++i)
+  {
+    if (!isfinite(positions[i]))
+    {
+      return RF_ERR_NOT_FINITE;
+    }
+  }
+  for (i = 0; i < 3 * triangle_count; ++i)
+  {
+    if (triangles[i] >= vertex_count)
+    {
+      return RF_ERR_NULL_ARGUMENT;
+    }
+  }
+  for (i = 0; i < vertex_count; ++i)
+  {
+    for (k = 0; k < 3; ++k)
+    {
+      lo[k] = fminf(lo[k], positions[3 * i + k]);
+      hi[k] = fmaxf(hi[k], positions[3 * i + k]);
+    }
+  }
+  for (k = 0; k < 3; ++k)
+  {
+    extent = fmaxf(extent, hi[k] - lo[k]);
+  }
+
+  device = rtcNewDevice(NULL);
+  if (!device)
+  {
+    return RF_ERR_NULL_ARGUMENT;
+  }
+  scene = rtcNewScene(device);
+  geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  vertex_buffer = (float*)rtcSetNewGeometryBuffer(
+    geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertex_count);
+  index_buffer = (unsigned*)rtcSetNewGeometryBuffer(
+    geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangle_count);
+  for (i = 0; i < 3 * vertex_count; ++i)
+  {
+    vertex_buffer[i] = positions[i];
+  }
+  for (i = 0; i < 3 * triangle_count; ++i)
+  {
+    index_buffer[i] = triangles[i];
+  }
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometry(scene, geometry);
+  rtcReleaseGeometry(geometry);
+  rtcCommitScene(scene);
+  rtcInitIntersectContext(&context);
+
+  for (i = 0; i < vertex_count; ++i)
+  {
+    const float* n = normals + 3 * i;
+    const float len = sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    struct RTCRayHit rh;
+    if (!(len > 0.0f) || !isfinite(len))
+    {
+      continue;
+    }
+    rh.ray.org_x = positions[3 * i];
+    rh.ray.org_y = positions[3 * i + 1];
+    rh.ray.org_z = positions[3 * i + 2];
+    rh.ray.dir_x = -n[0] / len;
+    rh.ray.dir_y = -n[1] / len;
+    rh.ray.dir_z = -n[2] / len;
+    /* The ray starts on the surface: skip the triangles that share the vertex. */
+    rh.ray.tnear = 1e-4f * extent;
+    rh.ray.tfar = INFINITY;
+    rh.ray.time = 0.0f;
+    rh.ray.mask = 0xFFFFFFFFu;
+    rh.ray.id = 0;
+    rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene, &context, &rh);
+    if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID)
+    {
+      distances[i] = rh.ray.tfar;
+    }
+  }
+  rtcReleaseScene(scene);
+  rtcReleaseDevice(device);
+  return RF_OK;
+}

@@ -1,0 +1,136 @@
+/**
+ * @class   vtkRefractionReference
+ * @brief   Ground truth for vtkRefractionPass: ray traces a renderer's glass on the CPU.
+ *
+ * Collects the renderer's visible actors marked as glass (vtkRefractionPass::IsGlass), takes
+ * each mapper's input polydata, triangulates it, moves points and point normals (when there
+ * are any; else geometric normals are used) to world space with the actor's matrix, and
+ * traces them with the reference tracer (rf_tracer.h, Embree 3) through the renderer's
+ * active camera: VTK's view matrix and projection matrix at the image's aspect ratio, the
+ * matrices the GPU uses. Call it after the scene has been rendered (or after setting the
+ * clipping range yourself): the camera's clipping range is used as it is.
+ *
+ * Two modes: TWO_INTERFACE is the exact counterpart of the pass's per-pixel formula with
+ * the true exit point instead of DIR's depth-map search; FULL is a Whitted ray tracer
+ * (Fresnel splits at every interface, true TIR, Beer-Lambert absorption, MaxDepth
+ * interfaces). The output image has, per pixel (row 0 at the bottom, as the pass's debug
+ * image), the float point arrays "Colour" (3, linear RGB), "P1", "P2", "T2" (3, view space),
+ * "Thickness", "Bounces", "TIR", "Hit", and "Flags" (0 no glass, 1 glass, 2 glass with
+ * TIR), named as in vtkRefractionPass::GetDebugImage() where they overlap.
+ *
+ * The environment is the built-in one (rf_builtin_environment, the pass's fallback); a cube
+ * map set on the renderer is not used, so compare such scenes by T2 and P2, not by colour.
+ * Glass far from the origin is traced relative to its centre (subtracted in double), so
+ * offsets such as 1e7 keep full float precision, as VTK's mappers do on the GPU.
+ *
+ * @code
+ * vtkNew<vtkRefractionReference> reference;
+ * reference->SetMode(vtkRefractionReference::TWO_INTERFACE);
+ * if (reference->Trace(renderer, 512, 512)) { vtkImageData* truth = reference->GetOutput(); }
+ * @endcode
+ */
+#ifndef vtkRefractionReference_h
+#define vtkRefractionReference_h
+
+#include "rf_reference_export.h" // For export macro
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // For members
+
+class vtkImageData;
+class vtkRenderer;
+
+class RF_REFERENCE_EXPORT vtkRefractionReference : public vtkObject
+{
+public:
+  static vtkRefractionReference* New();
+  vtkTypeMacro(vtkRefractionReference, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ModeType
+  {
+    TWO_INTERFACE = 0, ///< the GPU's formula with the true exit point
+    FULL = 1           ///< Whitted recursion: Fresnel splits, TIR, absorption
+  };
+
+  ///@{
+  /// Tracing mode (TWO_INTERFACE by default).
+  vtkSetClampMacro(Mode, int, TWO_INTERFACE, FULL);
+  vtkGetMacro(Mode, int);
+  ///@}
+
+  ///@{
+  /// TWO_INTERFACE only: TIR at the exit clamps to the critical angle (on, the paper's and
+  /// the pass's default TIR_CLAMP) or reflects once (off, the pass's TIR_REFLECT).
+  vtkSetMacro(TIRClamp, bool);
+  vtkGetMacro(TIRClamp, bool);
+  vtkBooleanMacro(TIRClamp, bool);
+  ///@}
+
+  ///@{
+  /// FULL only: interfaces per path (1..64, default 8).
+  vtkSetClampMacro(MaxDepth, int, 1, 64);
+  vtkGetMacro(MaxDepth, int);
+  ///@}
+
+  ///@{
+  /// Blend reflection and refraction with the exact dielectric Fresnel term (on by default).
+  vtkSetMacro(Fresnel, bool);
+  vtkGetMacro(Fresnel, bool);
+  vtkBooleanMacro(Fresnel, bool);
+  ///@}
+
+  ///@{
+  /// Worker threads (rows are interleaved over them; default 2).
+  vtkSetClampMacro(Threads, int, 1, 256);
+  vtkGetMacro(Threads, int);
+  ///@}
+
+  ///@{
+  /// Beer-Lambert absorption per unit length (world units) of every glass actor, per
+  /// colour channel; 0 (clear glass, the default) is what the pass draws.
+  vtkSetVector3Macro(Absorption, double);
+  vtkGetVector3Macro(Absorption, double);
+  ///@}
+
+  /**
+   * Trace the renderer's glass into a width x height image (0: the renderer's size).
+   * Returns false, with an error message, when there is no visible glass actor, a glass
+   * actor has no polydata input, empty polydata or non-finite points, or tracing fails.
+   */
+  bool Trace(vtkRenderer* renderer, int width = 0, int height = 0);
+
+  /// The image of the last successful Trace (nullptr before).
+  vtkImageData* GetOutput();
+
+  /// World-space bounding-box diagonal of the glass last traced: the length P2 errors are
+  /// measured against (rf_position_error).
+  vtkGetMacro(GlassDiagonal, double);
+  /// Glass actors and triangles last traced.
+  vtkGetMacro(NumberOfGlassActors, int);
+  vtkGetMacro(NumberOfTriangles, vtkIdType);
+  /// Wall-clock seconds of the last trace (BVH build and rays; not the mesh collection).
+  vtkGetMacro(TraceSeconds, double);
+
+protected:
+  vtkRefractionReference();
+  ~vtkRefractionReference() override;
+
+  int Mode = TWO_INTERFACE;
+  bool TIRClamp = true;
+  int MaxDepth = 8;
+  bool Fresnel = true;
+  int Threads = 2;
+  double Absorption[3] = { 0.0, 0.0, 0.0 };
+
+  double GlassDiagonal = 0.0;
+  int NumberOfGlassActors = 0;
+  vtkIdType NumberOfTriangles = 0;
+  double TraceSeconds = 0.0;
+  vtkSmartPointer<vtkImageData> Output;
+
+private:
+  vtkRefractionReference(const vtkRefractionReference&) = delete;
+  void operator=(const vtkRefractionReference&) = delete;
+};
+
+#endif

@@ -1,0 +1,111 @@
+// Checks a benchmark CSV: every figure finite, and DIR's PSNR against the two-interface
+// reference on the sphere above a measured threshold.
+//   CheckBenchmarkCsv results.csv MIN_DIR_SPHERE_PSNR
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+std::vector<std::string> Fields(const std::string& line)
+{
+  std::vector<std::string> fields;
+  std::string field;
+  bool quoted = false;
+  for (char c : line)
+  {
+    if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+    {
+      fields.push_back(field);
+      field.clear();
+    }
+    else
+      field += c;
+  }
+  fields.push_back(field);
+  return fields;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  if (argc < 3)
+  {
+    std::fprintf(stderr, "usage: CheckBenchmarkCsv results.csv MIN_PSNR\n");
+    return 2;
+  }
+  const double minimum = std::atof(argv[2]);
+  std::ifstream in(argv[1]);
+  std::string line;
+  if (!in || !std::getline(in, line))
+  {
+    std::fprintf(stderr, "cannot read %s\n", argv[1]);
+    return 1;
+  }
+  const auto header = Fields(line);
+  auto column = [&](const char* name) {
+    for (size_t i = 0; i < header.size(); ++i)
+      if (header[i] == name)
+        return static_cast<int>(i);
+    return -1;
+  };
+  const int mesh = column("mesh"), method = column("method"), steps = column("steps"),
+            range = column("depth_range"), adaptive = column("adaptive"),
+            psnr = column("psnr_two");
+  if (mesh < 0 || method < 0 || psnr < 0 || steps < 0 || range < 0 || adaptive < 0)
+  {
+    std::fprintf(stderr, "missing columns\n");
+    return 1;
+  }
+  int rows = 0;
+  int failures = 0;
+  bool sawDir = false;
+  while (std::getline(in, line))
+  {
+    const auto f = Fields(line);
+    ++rows;
+    if (f.size() != header.size())
+    {
+      std::fprintf(stderr, "row %d has %zu fields, header %zu\n", rows, f.size(), header.size());
+      ++failures;
+      continue;
+    }
+    for (size_t i = 0; i < f.size(); ++i)
+    {
+      if (static_cast<int>(i) == mesh || static_cast<int>(i) == method ||
+        static_cast<int>(i) == range || header[i] == "renderer")
+        continue;
+      char* end = nullptr;
+      const double v = std::strtod(f[i].c_str(), &end);
+      if (end == f[i].c_str() || !std::isfinite(v))
+      {
+        std::fprintf(stderr, "row %d: %s = '%s' is not a finite number\n", rows, header[i].c_str(),
+          f[i].c_str());
+        ++failures;
+      }
+    }
+    if (f[mesh] == "sphere" && f[method] == "DIR" && f[steps] == "5" && f[range] == "reduction" &&
+      f[adaptive] == "0")
+    {
+      sawDir = true;
+      const double value = std::atof(f[psnr].c_str());
+      std::printf("DIR (5 steps) on the sphere: PSNR %.2f dB against the two-interface reference "
+                  "(minimum %.2f)\n", value, minimum);
+      if (!(value >= minimum))
+        ++failures;
+    }
+  }
+  if (!sawDir)
+  {
+    std::fprintf(stderr, "no DIR sphere row\n");
+    ++failures;
+  }
+  std::printf("%d rows checked, %d problems\n", rows, failures);
+  return failures == 0 && rows > 0 ? 0 : 1;
+}

@@ -1,0 +1,592 @@
+// Shared harness of the stability and bad-input tests: a rig that renders a scene through the
+// refraction pass into a float colour buffer with the debug output on, counts the OpenGL
+// errors the pass leaves behind, captures VTK's messages, and closed forms to compare with.
+#ifndef rfStability_h
+#define rfStability_h
+
+#include "vtkRefractionPass.h"
+
+#include "rf_environment.h"
+#include "rf_optics.h"
+#include "rf_vec3.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkDataArray.h>
+#include <vtkFramebufferPass.h>
+#include <vtkImageData.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkOutputWindow.h>
+#include <vtkPointData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkRenderPass.h>
+#include <vtkRenderState.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+#include <vtkTextureObject.h>
+
+#include <GL/gl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace rfstab
+{
+//------------------------------------------------------------------------------
+// Collects VTK's errors and warnings so a test can assert what was reported (and that nothing
+// else was). Installed with vtkOutputWindow::SetInstance; echoes to stderr for the log.
+class MessageLog : public vtkOutputWindow
+{
+public:
+  static MessageLog* New();
+  vtkTypeMacro(MessageLog, vtkOutputWindow);
+
+  struct Entry
+  {
+    std::string Kind; // "error", "warning", "text"
+    std::string Text;
+  };
+  std::vector<Entry> Entries;
+
+  void DisplayText(const char* text) override { this->Record("text", text); }
+  void DisplayErrorText(const char* text) override { this->Record("error", text); }
+  void DisplayWarningText(const char* text) override { this->Record("warning", text); }
+  void DisplayGenericWarningText(const char* text) override { this->Record("warning", text); }
+  void DisplayDebugText(const char* text) override { this->Record("text", text); }
+
+  /// Number of messages of a kind ("" for all) containing every one of the given strings.
+  int Count(const std::string& kind, std::initializer_list<std::string> parts = {}) const
+  {
+    int n = 0;
+    for (const auto& e : this->Entries)
+    {
+      if (!kind.empty() && e.Kind != kind)
+      {
+        continue;
+      }
+      bool all = true;
+      for (const auto& p : parts)
+      {
+        all = all && e.Text.find(p) != std::string::npos;
+      }
+      n += all ? 1 : 0;
+    }
+    return n;
+  }
+  void Clear() { this->Entries.clear(); }
+
+protected:
+  MessageLog() = default;
+  void Record(const char* kind, const char* text)
+  {
+    this->Entries.push_back({ kind, text ? text : "" });
+    std::fprintf(stderr, "[vtk %s] %s", kind, text ? text : "");
+  }
+};
+vtkStandardNewMacro(MessageLog);
+
+inline MessageLog* InstallLog()
+{
+  vtkNew<MessageLog> log;
+  vtkOutputWindow::SetInstance(log);
+  return log; // the output window singleton keeps it alive
+}
+
+//------------------------------------------------------------------------------
+// Wraps the refraction pass: drains GL errors before it, collects the ones it leaves, and reads
+// back the float colour of the framebuffer it drew into (the enclosing vtkFramebufferPass's).
+class ProbePass : public vtkRenderPass
+{
+public:
+  static ProbePass* New();
+  vtkTypeMacro(ProbePass, vtkRenderPass);
+
+  vtkSmartPointer<vtkRenderPass> Inner;
+  std::vector<unsigned int> GLErrors;
+  std::vector<float> Colour; // RGBA, bottom row first
+  int Size[2] = { 0, 0 };
+
+  void Render(const vtkRenderState* s) override
+  {
+    while (glGetError() != GL_NO_ERROR)
+    {
+    }
+    this->Inner->Render(s);
+    this->NumberOfRenderedProps = this->Inner->GetNumberOfRenderedProps();
+    for (GLenum e = glGetError(); e != GL_NO_ERROR; e = glGetError())
+    {
+      this->GLErrors.push_back(e);
+    }
+    int origin[2];
+    s->GetRenderer()->GetTiledSizeAndOrigin(this->Size, this->Size + 1, origin, origin + 1);
+    this->Colour.assign(4 * static_cast<size_t>(std::max(this->Size[0], 0)) *
+        static_cast<size_t>(std::max(this->Size[1], 0)),
+      0.f);
+    if (this->Size[0] > 0 && this->Size[1] > 0)
+    {
+      // The framebuffer pass renders into its own FBO with the viewport at (0, 0).
+      glPixelStorei(GL_PACK_ALIGNMENT, 4);
+      glReadPixels(0, 0, this->Size[0], this->Size[1], GL_RGBA, GL_FLOAT, this->Colour.data());
+      while (glGetError() != GL_NO_ERROR)
+      {
+      }
+    }
+  }
+  void ReleaseGraphicsResources(vtkWindow* w) override
+  {
+    if (this->Inner)
+    {
+      this->Inner->ReleaseGraphicsResources(w);
+    }
+  }
+
+protected:
+  ProbePass() = default;
+};
+vtkStandardNewMacro(ProbePass);
+
+//------------------------------------------------------------------------------
+// One rendered frame: the float colour and the pass's debug arrays, per pixel, bottom row first.
+struct Frame
+{
+  int W = 0;
+  int H = 0;
+  std::vector<float> Colour; // RGBA
+  std::vector<float> P2;     // 3 per pixel, view space
+  std::vector<float> T2;     // 3 per pixel, view space
+  std::vector<float> Thickness;
+  std::vector<float> Flags; // 0 no glass, 1 glass, 2 TIR at the exit, 3 TIR at the entry
+  int GLErrors = 0;
+  bool HasDebug = false;
+
+  bool Glass(int i) const { return this->HasDebug && this->Flags[i] > 0.5f; }
+  rf_vec3 T2At(int i) const
+  {
+    return rf_vec3_make(this->T2[3 * i], this->T2[3 * i + 1], this->T2[3 * i + 2]);
+  }
+  rf_vec3 P2At(int i) const
+  {
+    return rf_vec3_make(this->P2[3 * i], this->P2[3 * i + 1], this->P2[3 * i + 2]);
+  }
+  rf_vec3 RGB(int i) const
+  {
+    return rf_vec3_make(this->Colour[4 * i], this->Colour[4 * i + 1], this->Colour[4 * i + 2]);
+  }
+  /// NaN or infinite values in the colour and the debug arrays.
+  int NonFinite() const
+  {
+    int n = 0;
+    for (const auto* v : { &this->Colour, &this->P2, &this->T2, &this->Thickness, &this->Flags })
+    {
+      for (float x : *v)
+      {
+        n += std::isfinite(x) ? 0 : 1;
+      }
+    }
+    return n;
+  }
+};
+
+//------------------------------------------------------------------------------
+// A renderer whose pass chain is: float framebuffer pass -> probe -> refraction pass.
+struct Rig
+{
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRefractionPass> Glass;
+  vtkNew<ProbePass> Probe;
+  vtkNew<vtkFramebufferPass> Framebuffer;
+  vtkSmartPointer<vtkRenderWindow> Window;
+
+  Rig(int width, int height)
+  {
+    this->Glass->DebugOutputOn();
+    this->Probe->Inner = this->Glass;
+    this->Framebuffer->SetColorFormat(vtkTextureObject::Float32);
+    this->Framebuffer->SetDelegatePass(this->Probe);
+    this->Renderer->SetPass(this->Framebuffer);
+    this->Renderer->SetBackground(0.0, 0.0, 0.0);
+    this->Window = vtkSmartPointer<vtkRenderWindow>::New();
+    this->Window->SetSize(width, height);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->AddRenderer(this->Renderer);
+  }
+  ~Rig()
+  {
+    // Release while the context and the passes are alive (vtkFramebufferPass insists).
+    this->Window->Finalize();
+  }
+
+  vtkCamera* Camera() { return this->Renderer->GetActiveCamera(); }
+
+  void LookAt(const double eye[3], const double focal[3], const double up[3], double viewAngle,
+    double nearPlane, double farPlane)
+  {
+    vtkCamera* camera = this->Camera();
+    camera->SetPosition(eye[0], eye[1], eye[2]);
+    camera->SetFocalPoint(focal[0], focal[1], focal[2]);
+    camera->SetViewUp(up[0], up[1], up[2]);
+    camera->OrthogonalizeViewUp();
+    camera->SetViewAngle(viewAngle);
+    camera->SetClippingRange(nearPlane, farPlane);
+  }
+
+  Frame Render()
+  {
+    this->Probe->GLErrors.clear();
+    this->Window->Render();
+    Frame f;
+    f.W = this->Probe->Size[0];
+    f.H = this->Probe->Size[1];
+    f.Colour = this->Probe->Colour;
+    f.GLErrors = static_cast<int>(this->Probe->GLErrors.size());
+    for (unsigned int e : this->Probe->GLErrors)
+    {
+      std::fprintf(stderr, "OpenGL error 0x%x after the refraction pass\n", e);
+    }
+    vtkImageData* debug = this->Glass->GetDebugImage();
+    const size_t count = static_cast<size_t>(std::max(f.W, 0)) * std::max(f.H, 0);
+    if (debug && static_cast<size_t>(debug->GetNumberOfPoints()) == count && count > 0 &&
+      this->Glass->GetNumberOfGlassProps() > 0)
+    {
+      f.HasDebug = true;
+      auto copy = [debug](const char* name, std::vector<float>& out, int components) {
+        vtkDataArray* a = debug->GetPointData()->GetArray(name);
+        out.resize(static_cast<size_t>(a->GetNumberOfTuples()) * components);
+        for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+        {
+          for (int c = 0; c < components; ++c)
+          {
+            out[i * components + c] = static_cast<float>(a->GetComponent(i, c));
+          }
+        }
+      };
+      copy("P2", f.P2, 3);
+      copy("T2", f.T2, 3);
+      copy("Thickness", f.Thickness, 1);
+      copy("Flags", f.Flags, 1);
+    }
+    else
+    {
+      f.P2.assign(3 * count, 0.f);
+      f.T2.assign(3 * count, 0.f);
+      f.Thickness.assign(count, 0.f);
+      f.Flags.assign(count, 0.f);
+    }
+    return f;
+  }
+
+  /// Unit view-space direction of the eye ray through the centre of pixel (x, y).
+  rf_vec3 PixelRay(int x, int y, int w, int h)
+  {
+    vtkNew<vtkMatrix4x4> toView;
+    toView->DeepCopy(this->Camera()->GetProjectionTransformMatrix(
+      static_cast<double>(w) / h, -1.0, 1.0));
+    toView->Invert();
+    const double ndc[4] = { (x + 0.5) / w * 2.0 - 1.0, (y + 0.5) / h * 2.0 - 1.0, -1.0, 1.0 };
+    double v[4];
+    toView->MultiplyPoint(ndc, v);
+    return rf_vec3_normalize(rf_vec3_make(v[0] / v[3], v[1] / v[3], v[2] / v[3]));
+  }
+
+  /// All pixel rays at once (the inverse projection computed once).
+  std::vector<rf_vec3> PixelRays(int w, int h)
+  {
+    vtkNew<vtkMatrix4x4> toView;
+    toView->DeepCopy(this->Camera()->GetProjectionTransformMatrix(
+      static_cast<double>(w) / h, -1.0, 1.0));
+    toView->Invert();
+    std::vector<rf_vec3> rays(static_cast<size_t>(w) * h);
+    for (int y = 0; y < h; ++y)
+    {
+      for (int x = 0; x < w; ++x)
+      {
+        const double ndc[4] = { (x + 0.5) / w * 2.0 - 1.0, (y + 0.5) / h * 2.0 - 1.0, -1.0,
+          1.0 };
+        double v[4];
+        toView->MultiplyPoint(ndc, v);
+        rays[static_cast<size_t>(y) * w + x] =
+          rf_vec3_normalize(rf_vec3_make(v[0] / v[3], v[1] / v[3], v[2] / v[3]));
+      }
+    }
+    return rays;
+  }
+
+  /// World point to view space.
+  rf_vec3 ToView(const double p[3])
+  {
+    double in[4] = { p[0], p[1], p[2], 1.0 };
+    double out[4];
+    this->Camera()->GetViewTransformMatrix()->MultiplyPoint(in, out);
+    return rf_vec3_make(out[0], out[1], out[2]);
+  }
+  /// World direction to view space.
+  rf_vec3 DirToView(const double d[3])
+  {
+    vtkMatrix4x4* m = this->Camera()->GetViewTransformMatrix();
+    double r[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      r[i] = m->GetElement(i, 0) * d[0] + m->GetElement(i, 1) * d[1] + m->GetElement(i, 2) * d[2];
+    }
+    return rf_vec3_make(r[0], r[1], r[2]);
+  }
+  /// The built-in environment's colour seen along a view-space direction (what the shader does).
+  rf_vec3 Environment(rf_vec3 directionVC)
+  {
+    vtkMatrix4x4* m = this->Camera()->GetViewTransformMatrix();
+    double world[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      // The view rotation is orthonormal: its transpose maps view to world.
+      world[i] = m->GetElement(0, i) * directionVC.x + m->GetElement(1, i) * directionVC.y +
+        m->GetElement(2, i) * directionVC.z;
+    }
+    double rgb[3];
+    rf_builtin_environment(world, rgb);
+    return rf_vec3_make(rgb[0], rgb[1], rgb[2]);
+  }
+};
+
+//------------------------------------------------------------------------------
+// Closed forms. The eye is the view-space origin; `ior` is the glass's index (outside is 1).
+// The exit follows the pass's default policy, TIR_CLAMP (rf_refract_clamped), and a ray that
+// is totally reflected on entry (ior < 1, a bubble) leaves along the mirror direction.
+struct Trace
+{
+  bool Hit = false;
+  int Flag = 0; // as the debug output: 1 through, 2 TIR at the exit, 3 TIR at the entry
+  rf_vec3 P1 = { 0, 0, 0 };
+  rf_vec3 N1 = { 0, 0, 0 }; // unit, facing the eye
+  rf_vec3 P2 = { 0, 0, 0 };
+  rf_vec3 T2 = { 0, 0, 0 };
+  int EntryFace = -1; // for boxes: 2 * axis + side
+  int ExitFace = -1;
+};
+
+inline double AngleDegrees(rf_vec3 a, rf_vec3 b)
+{
+  const rf_vec3 ua = rf_vec3_normalize(a);
+  const rf_vec3 ub = rf_vec3_normalize(b);
+  if (rf_vec3_length(ua) == 0.0 || rf_vec3_length(ub) == 0.0)
+  {
+    return 180.0;
+  }
+  // atan2 of |a x b| and a.b stays accurate for tiny angles, unlike acos.
+  return std::atan2(rf_vec3_length(rf_vec3_cross(ua, ub)), rf_vec3_dot(ua, ub)) * 180.0 /
+    3.14159265358979323846;
+}
+
+/// Refraction into the glass at P1 with the outward normal `outward`; false on TIR.
+inline bool Enter(rf_vec3 d, rf_vec3 outward, double ior, rf_vec3& t1)
+{
+  return rf_refract(d, outward, 1.0 / ior, &t1) == RF_OK;
+}
+
+/// The ray along the unit direction d through a sphere (view-space centre c, radius r).
+inline Trace ThroughSphere(rf_vec3 d, rf_vec3 c, double r, double ior)
+{
+  Trace t;
+  const double b = rf_vec3_dot(d, c);
+  const double disc = b * b - (rf_vec3_dot(c, c) - r * r);
+  if (disc <= 0.0 || b - std::sqrt(disc) <= 0.0)
+  {
+    return t;
+  }
+  t.Hit = true;
+  t.P1 = rf_vec3_scale(d, b - std::sqrt(disc));
+  t.N1 = rf_vec3_scale(rf_vec3_sub(t.P1, c), 1.0 / r);
+  rf_vec3 t1;
+  if (!Enter(d, t.N1, ior, t1))
+  {
+    t.Flag = 3;
+    t.P2 = t.P1;
+    t.T2 = rf_reflect(d, t.N1);
+    return t;
+  }
+  // The chord of a sphere along t1 from P1 has length 2 r cos(theta_t).
+  t.P2 = rf_vec3_add(t.P1, rf_vec3_scale(t1, 2.0 * r * -rf_vec3_dot(t1, t.N1)));
+  const rf_vec3 n2 = rf_vec3_scale(rf_vec3_sub(t.P2, c), 1.0 / r);
+  t.Flag = rf_refract_clamped(t1, n2, ior, &t.T2) == RF_TIR ? 2 : 1;
+  return t;
+}
+
+/// A box: view-space centre, orthonormal axes and half sizes.
+struct Box
+{
+  rf_vec3 C;
+  rf_vec3 Axis[3];
+  double Half[3];
+};
+
+inline Trace ThroughBox(rf_vec3 d, const Box& box, double ior)
+{
+  Trace t;
+  // Slabs in the box's frame: the eye is at -C.
+  double o[3];
+  double dir[3];
+  double tNear = -1e300;
+  double tFar = 1e300;
+  int nearFace = -1;
+  int farFace = -1;
+  for (int k = 0; k < 3; ++k)
+  {
+    o[k] = -rf_vec3_dot(box.C, box.Axis[k]);
+    dir[k] = rf_vec3_dot(d, box.Axis[k]);
+    if (std::fabs(dir[k]) < 1e-300)
+    {
+      if (std::fabs(o[k]) > box.Half[k])
+      {
+        return t;
+      }
+      continue;
+    }
+    double t0 = (-box.Half[k] - o[k]) / dir[k];
+    double t1 = (box.Half[k] - o[k]) / dir[k];
+    int f0 = 2 * k;
+    int f1 = 2 * k + 1;
+    if (t0 > t1)
+    {
+      std::swap(t0, t1);
+      std::swap(f0, f1);
+    }
+    if (t0 > tNear)
+    {
+      tNear = t0;
+      nearFace = f0;
+    }
+    if (t1 < tFar)
+    {
+      tFar = t1;
+      farFace = f1;
+    }
+  }
+  if (!(tNear < tFar) || tNear <= 0.0 || nearFace < 0)
+  {
+    return t;
+  }
+  (void)farFace;
+  auto outward = [&box](int face) {
+    return rf_vec3_scale(box.Axis[face / 2], (face % 2) ? 1.0 : -1.0);
+  };
+  t.Hit = true;
+  t.EntryFace = nearFace;
+  t.P1 = rf_vec3_scale(d, tNear);
+  t.N1 = outward(nearFace);
+  rf_vec3 t1;
+  if (!Enter(d, t.N1, ior, t1))
+  {
+    t.Flag = 3;
+    t.P2 = t.P1;
+    t.T2 = rf_reflect(d, t.N1);
+    return t;
+  }
+  // Exit: the nearest slab plane ahead of P1 along t1, from inside.
+  double best = 1e300;
+  int exitFace = -1;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double pk = rf_vec3_dot(rf_vec3_sub(t.P1, box.C), box.Axis[k]);
+    const double dk = rf_vec3_dot(t1, box.Axis[k]);
+    if (std::fabs(dk) < 1e-300)
+    {
+      continue;
+    }
+    const int face = dk > 0.0 ? 2 * k + 1 : 2 * k;
+    const double s = ((dk > 0.0 ? box.Half[k] : -box.Half[k]) - pk) / dk;
+    if (s > 1e-12 && s < best)
+    {
+      best = s;
+      exitFace = face;
+    }
+  }
+  t.ExitFace = exitFace;
+  t.P2 = rf_vec3_add(t.P1, rf_vec3_scale(t1, best));
+  t.Flag = rf_refract_clamped(t1, outward(exitFace), ior, &t.T2) == RF_TIR ? 2 : 1;
+  return t;
+}
+
+//------------------------------------------------------------------------------
+// Continuity between two frames of the same scene, the second with a perturbed input.
+struct Change
+{
+  double T2Degrees = 0.0; // largest change of T2 over pixels that are glass with the same flag
+  double Colour = 0.0;    // largest change of a colour channel over those pixels
+  int FlagChanges = 0;    // pixels whose flag (coverage or TIR) differs
+  int GlassPixels = 0;
+};
+
+inline Change Compare(const Frame& a, const Frame& b)
+{
+  Change c;
+  const int n = a.W * a.H;
+  for (int i = 0; i < n && b.W * b.H == n; ++i)
+  {
+    if (!a.Glass(i) && !b.Glass(i))
+    {
+      continue;
+    }
+    if (a.Flags[i] != b.Flags[i])
+    {
+      ++c.FlagChanges;
+      continue;
+    }
+    ++c.GlassPixels;
+    c.T2Degrees = std::max(c.T2Degrees, AngleDegrees(a.T2At(i), b.T2At(i)));
+    for (int k = 0; k < 3; ++k)
+    {
+      const double d = std::fabs(static_cast<double>(a.Colour[4 * i + k]) - b.Colour[4 * i + k]);
+      c.Colour = std::max(c.Colour, std::isfinite(d) ? d : 1e30);
+    }
+  }
+  return c;
+}
+
+//------------------------------------------------------------------------------
+// One line of the stability table.
+struct Row
+{
+  std::string Case;
+  std::string Measure; // what the error is, with its unit
+  double Error = 0.0;
+  double ErrorBound = 0.0;
+  int NonFinite = 0;
+  int GLErrors = 0;
+  std::string Perturbation;
+  double DeltaT2 = 0.0;
+  double DeltaT2Bound = 0.0;
+  double DeltaColour = 0.0;
+  double DeltaColourBound = 0.0;
+  int FlagChanges = 0;
+  int FlagChangeBound = 0;
+  std::vector<std::string> Failures;
+
+  bool Passed() const { return this->Failures.empty(); }
+  void Require(bool ok, const std::string& what)
+  {
+    if (!ok)
+    {
+      this->Failures.push_back(what);
+    }
+  }
+  /// Checks the common assertions; call after filling the figures.
+  void Judge()
+  {
+    this->Require(this->NonFinite == 0, "NaN/Inf in the output");
+    this->Require(this->GLErrors == 0, "OpenGL error after the pass");
+    this->Require(this->Error <= this->ErrorBound, "error above its bound");
+    this->Require(this->DeltaT2 <= this->DeltaT2Bound, "T2 change under perturbation above bound");
+    this->Require(
+      this->DeltaColour <= this->DeltaColourBound, "colour change under perturbation above bound");
+    this->Require(this->FlagChanges <= this->FlagChangeBound, "too many pixels changed flag");
+  }
+};
+}
+
+#endif

@@ -63,6 +63,9 @@ rf_status rf_normal_distances(const float* positions, const float* normals, size
     return RF_ERR_NULL_ARGUMENT;
   }
   scene = rtcNewScene(device);
+  /* Rays through the centre of a sphere end exactly on the opposite pole vertex: only the
+   * robust (watertight) intersector is sure to report such edge and vertex hits. */
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
   geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
   vertex_buffer = (float*)rtcSetNewGeometryBuffer(
     geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertex_count);
@@ -107,6 +110,19 @@ rf_status rf_normal_distances(const float* positions, const float* normals, size
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene, &context, &rh);
+    /* A ray that ends exactly on a vertex or an edge of the far side (the antipode of a UV
+     * sphere's vertex is a vertex) can slip through between its triangles in float: retry
+     * with the direction tilted by 1e-4 radians, which moves the hit by 1e-4 d at most. */
+    for (k = 0; k < 2 && rh.hit.geomID == RTC_INVALID_GEOMETRY_ID; ++k)
+    {
+      const float tilt = 1e-4f;
+      rh.ray.dir_x = -n[0] / len + (k == 0 ? tilt : 0.0f);
+      rh.ray.dir_y = -n[1] / len + (k == 1 ? tilt : 0.0f);
+      rh.ray.dir_z = -n[2] / len + tilt;
+      rh.ray.tfar = INFINITY;
+      rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      rtcIntersect1(scene, &context, &rh);
+    }
     if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID)
     {
       distances[i] = rh.ray.tfar;

@@ -79,13 +79,16 @@ struct Setting
   int Steps = 5;
   bool Bounds = false;
   bool Adaptive = false;
+  bool Nearest = false;
+  bool Paper = false; // the paper's search exactly: no secant refinement
   std::string Label() const
   {
     std::ostringstream s;
     s << Method;
     if (Method == "DIR")
     {
-      s << (Adaptive ? " adaptive<=" : " ") << Steps << (Bounds ? " bbox" : "");
+      s << (Adaptive ? " adaptive<=" : " ") << Steps << (Bounds ? " bbox" : "")
+        << (Nearest ? " nearest" : "") << (Paper ? " paper" : "");
     }
     return s.str();
   }
@@ -467,6 +470,7 @@ std::vector<Setting> Settings(bool smoke)
     }
   }
   settings.push_back({ "DIR", 8, false, true });
+  settings.push_back({ "DIR", 5, false, false, true });
   settings.push_back({ "ISR", 0, false, false });
   settings.push_back({ "SSP", 0, false, false });
   return settings;
@@ -752,6 +756,9 @@ int main(int argc, char* argv[])
         pass->SetDepthRangeMode(setting.Bounds ? vtkRefractionPass::DEPTH_RANGE_BOUNDS
                                                : vtkRefractionPass::DEPTH_RANGE_REDUCTION);
         pass->SetAdaptiveSearch(setting.Adaptive);
+        pass->SetBackSurface(setting.Nearest ? vtkRefractionPass::BACK_SURFACE_NEAREST
+                                             : vtkRefractionPass::BACK_SURFACE_FURTHEST);
+        pass->SetSecantRefinement(!setting.Paper);
         const Timing t = TimeFrames(window, pass, options.Frames);
         pass->DebugOutputOn();
         window->Render();

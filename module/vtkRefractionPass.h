@@ -35,6 +35,7 @@
 #include "vtkSmartPointer.h"              // For members
 #include "vtkWeakPointer.h"               // For members
 
+#include <map>    // For members
 #include <memory> // For std::unique_ptr
 #include <string> // For members
 #include <vector> // For members
@@ -48,6 +49,7 @@ class vtkOpenGLRenderTimer;
 class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
 class vtkMapper;
+class vtkPolyData;
 class vtkProp;
 class vtkRefractionOpaqueStep;
 class vtkTexture;
@@ -139,6 +141,34 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Beyond the paper (on by default): after the search, one secant step inside its final
+   * bracket (the linear refinement of relief mapping), taken only between valid texels so
+   * the search stays conservative. Off gives the paper's search exactly.
+   */
+  vtkSetMacro(SecantRefinement, bool);
+  vtkGetMacro(SecantRefinement, bool);
+  vtkBooleanMacro(SecantRefinement, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Which back surface the capture keeps where several project to a pixel: the furthest
+   * (the paper's and Wyman's choice) or the nearest back-facing one (beyond the paper: on
+   * shapes of several parts, such as a contour of separate blobs, the furthest surface
+   * belongs to another part). Back faces are told by winding, corrected per mesh by the sign
+   * of its volume, so inward-wound closed meshes work too.
+   */
+  enum BackSurfaceType
+  {
+    BACK_SURFACE_FURTHEST = 0,
+    BACK_SURFACE_NEAREST = 1
+  };
+  vtkSetClampMacro(BackSurface, int, BACK_SURFACE_FURTHEST, BACK_SURFACE_NEAREST);
+  vtkGetMacro(BackSurface, int);
+  ///@}
+
+  ///@{
   /// SSP: perturbation of the screen position by the view-space normal (default 0.05, the
   /// chapter's value), Fresnel bias and power (0.4 and 5, the chapter's glass), and chromatic
   /// aberration (relative spread of the red and blue offsets; 0 = none).
@@ -180,7 +210,8 @@ public:
    * Debug output: when on, every render also writes, per pixel of the glass, the exit point
    * P2 (view space), the exit direction T2 (view space) and the thickness |P2 - P1| into
    * GetDebugImage(): point arrays "P2" (3), "T2" (3), "Thickness" (1) and "Flags" (1: 0 no
-   * glass, 1 glass, 2 glass with total internal reflection at the exit).
+   * glass, 1 glass, 2 glass with total internal reflection at the exit, 3 total reflection at
+   * the entry: IOR < 1 beyond the critical angle, T2 is then the mirror direction).
    */
   vtkSetMacro(DebugOutput, bool);
   vtkGetMacro(DebugOutput, bool);
@@ -216,6 +247,8 @@ public:
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
   bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
@@ -249,6 +282,7 @@ protected:
   void UpdateShaderDefines(vtkOpenGLRenderer* ren);
   void CaptureSceneForSSP(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass);
   void MapISRAttribute(vtkProp* prop);
+  int GetWindingSign(vtkProp* prop);
   bool NeedsBackSurface() const { return this->Method == DIR || this->Method == ISR; }
   void UpdateCameraUniforms(vtkOpenGLRenderer* ren);
 
@@ -262,6 +296,27 @@ protected:
   bool Fresnel = true;
   bool DebugOutput = false;
   bool AdaptiveSearch = false;
+  bool SecantRefinement = true;
+  int BackSurface = BACK_SURFACE_FURTHEST;
+  std::map<vtkPolyData*, std::pair<vtkMTimeType, int>> WindingCache;
+  /// SplitProps' verdict on a glass prop (IOR, points, cells), kept until its index or its
+  /// data change, so a static scene scans no points and repeats no message per frame.
+  enum GlassVerdictType
+  {
+    GLASS_OK = 0,
+    GLASS_AS_ORDINARY = 1, ///< drawn as an ordinary actor (bad IOR, no polygons)
+    GLASS_SKIPPED = 2      ///< not drawn (empty, NaN or infinite points)
+  };
+  struct GlassCheck
+  {
+    vtkMTimeType Time = 0; ///< the data's
+    const void* Data = nullptr;
+    double IOR = 0.0;
+    int Verdict = GLASS_OK;
+  };
+  std::map<vtkProp*, GlassCheck> GlassChecks;
+  int CheckGlassProp(vtkProp* prop);
+  bool WarnedEmptyViewport = false;
   double SSPStrength = 0.05;
   double SSPFresnelBias = 0.4;
   double SSPFresnelPower = 5.0;

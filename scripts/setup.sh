@@ -4,6 +4,8 @@
 set -euo pipefail
 packages=(cmake g++ make pkg-config libvtk9-dev libglew-dev libegl-dev libegl-mesa0
   libgl1-mesa-dri xvfb xauth libopenimageio-dev)
+# clang with libFuzzer (Debian keeps it in libclang-rt-14-dev): the fuzz test of the C core.
+packages+=(clang libclang-rt-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -3,13 +3,15 @@
 // Injected into VTK's polydata fragment shader by vtkRefractionPass. The part before the
 // RF::Impl marker goes before main(), the part after it at the end of main().
 // Defines set by the pass: RF_METHOD_{SIR,DIR,ISR,SSP}, RF_TIR_CLAMP, RF_FRESNEL,
-// RF_ENV_CUBEMAP, RF_DEPTH_RANGE_BOUNDS, RF_ADAPTIVE_SEARCH, RF_MAX_SEARCH_STEPS; RF_POSITION_VC and RF_NORMAL_VC name the
+// RF_ENV_CUBEMAP, RF_DEPTH_RANGE_BOUNDS, RF_ADAPTIVE_SEARCH, RF_SECANT_REFINE,
+// RF_MAX_SEARCH_STEPS; RF_POSITION_VC and RF_NORMAL_VC name the
 // mapper's view-space position and normal.
 #define RF_STAGE_BACK 1
 #define RF_STAGE_FRONT 2
 #define RF_STAGE_DEBUG 3
 #define RF_STAGE_MASK 4
 uniform int rfStage;
+uniform int rfWindingSign;
 uniform float rfIOR;
 uniform int rfSearchSteps;
 uniform int rfParallel;
@@ -48,16 +50,22 @@ vec3 rfViewDirection(vec3 p)
   return rfParallel == 1 ? vec3(0.0, 0.0, -1.0) : normalize(p);
 }
 
-// The unit shading normal; where it is zero, tiny or not finite (zero-length normals in the
-// data, opposite normals interpolated to zero) the face normal from the position's
-// derivatives, else the direction toward the eye. normalize() of a zero vector is NaN, and
-// one NaN normal spreads through the filtered back-normal texture to its neighbours.
+// The unit shading normal; where it is unusable the face normal from the position's
+// derivatives, else the direction toward the eye. Unusable: zero, tiny or not finite (VTK has
+// normalized it already, so a zero normal arrives as NaN), or turning by more than 1.5 rad
+// across the pixel's 2x2 quad. The last catches vertex normals that cancel inside a triangle
+// (zero-length normals in the data): there the interpolated vector is rounding noise (the
+// attribute planes round each component on their own) and its direction is arbitrary (a turn
+// of ~2.8 on average), while a genuine shading normal turns by a few degrees per pixel (the
+// metaball isosurface, the steepest of the regression scenes, stays below the threshold).
+// One NaN normal would also spread through the filtered back-normal texture to neighbours.
 // Call in uniform control flow (derivatives).
 vec3 rfSafeNormal(vec3 n, vec3 p)
 {
   vec3 face = cross(dFdx(p), dFdy(p));
   float n2 = dot(n, n);
-  if (n2 > 1e-24 && n2 < 1e30)
+  float turn = length(dFdx(n)) + length(dFdy(n));
+  if (n2 > 1e-24 && n2 < 1e30 && turn < 1.5)
   {
     return n * inversesqrt(n2);
   }
@@ -126,11 +134,15 @@ int rfRefractWithPolicy(vec3 incident, vec3 normal, float eta, out vec3 transmit
     normal = -normal;
   }
   float cosI = -dot(incident, normal);
-  float k = 1.0 - eta * eta * (1.0 - cosI * cosI);
+  // The tangential part of the incident direction (sin(theta_i) long). Refracting as
+  // eta tangent - sqrt(k) N instead of refract()'s eta I + (eta cosI - sqrt(k)) N avoids the
+  // cancellation of eta I against eta cosI N, which at eta = 1000 (IOR 1000 at the exit)
+  // leaves 6% rounding noise in a float's tangential part; twin of rf_refract.
+  vec3 tangent = incident + cosI * normal;
+  float k = 1.0 - eta * eta * dot(tangent, tangent);
   if (k < 0.0)
   {
 #ifdef RF_TIR_CLAMP
-    vec3 tangent = incident + cosI * normal;
     float lt = length(tangent);
     transmitted = lt > 0.0 ? tangent / lt : incident;
 #else
@@ -138,7 +150,7 @@ int rfRefractWithPolicy(vec3 incident, vec3 normal, float eta, out vec3 transmit
 #endif
     return 1;
   }
-  transmitted = normalize(eta * incident + (eta * cosI - sqrt(k)) * normal);
+  transmitted = normalize(eta * tangent - sqrt(k) * normal);
   return 0;
 }
 
@@ -307,9 +319,10 @@ bool rf_dir_cbs(vec3 P1, vec3 T1, vec2 depthRange, out vec3 P2, out vec2 tc)
   P2 = S;
   int steps = rfSearchSteps;
 #ifdef RF_ADAPTIVE_SEARCH
-  // No more halvings than there are texels on the segment to tell apart.
+  // No more halvings than it takes to bring the bracket under half a texel of the segment's
+  // projection (a coarser bracket picks the neighbouring texel's normal).
   float texels = length(dt * rfViewport.zw);
-  steps = min(steps, int(ceil(log2(max(texels, 1.0)))));
+  steps = min(steps, int(ceil(log2(max(2.0 * texels, 1.0)))));
 #endif
   for (int i = 0; i < RF_MAX_SEARCH_STEPS; ++i)
   {
@@ -328,6 +341,29 @@ bool rf_dir_cbs(vec3 P1, vec3 T1, vec2 depthRange, out vec3 P2, out vec2 tc)
     }
   }
   tc = rfProjectToTexture(P2);
+#ifdef RF_SECANT_REFINE
+  // Beyond the paper: one secant step inside the final bracket [P2, P2 + dv] (relief
+  // mapping's linear refinement); twin of rf_dir_secant_refine. Only across a valid far
+  // texel (a crossing, not a silhouette), and only onto a valid texel (still conservative).
+  if (steps > 0 && beta + dbeta <= 1.0)
+  {
+    vec3 farEnd = P2 + dv;
+    float farAlpha = rfAffine ? beta + dbeta : rf_dir_alpha(k1, k2, farEnd.z);
+    float farStored = rfStoredDepth(ts + farAlpha * dt);
+    float nearGap = rfStoredDepth(tc) + P2.z;
+    float farGap = farStored + farEnd.z;
+    if (farStored > 0.0 && nearGap > 0.0 && farGap < 0.0)
+    {
+      vec3 refined = P2 + (nearGap / (nearGap - farGap)) * dv;
+      vec2 refinedTC = rfProjectToTexture(refined);
+      if (rfStoredDepth(refinedTC) > 0.0)
+      {
+        P2 = refined;
+        tc = refinedTC;
+      }
+    }
+  }
+#endif
   return true;
 }
 #endif

@@ -107,6 +107,12 @@ rf_status rf_dir_segment_init(rf_vec3 P1, rf_vec3 T1, double depth_min, double d
   /* eq. 9 constants; S.z - E.z = depth_max - depth_min > 0 here. */
   result.k1 = 1.0 / result.S.z;
   result.k2 = result.S.z * result.E.z / (result.S.z - result.E.z);
+  /* A subnormal depth makes 1 / S.z overflow, huge depths S.z E.z: eq. 9 would then give
+   * infinite or NaN parameters (found by fuzzing, tests/fuzz). */
+  if (!isfinite(result.k1) || !isfinite(result.k2))
+  {
+    return RF_ERR_NOT_FINITE;
+  }
 
   status = project_to_texture(projection, result.S, result.ts);
   if (status != RF_OK)
@@ -209,4 +215,56 @@ double rf_cbs_error_bound(int steps)
   }
   /* section 3.3: beta_error <= 0.5^c. */
   return ldexp(1.0, -steps);
+}
+
+rf_status rf_dir_secant_refine(const rf_dir_segment* seg, int steps, rf_depth_sampler sample,
+  void* context, rf_vec3* P2, double tc[2], double* beta)
+{
+  rf_vec3 far_end;
+  double far_tc[2];
+  double refined_tc[2];
+  double near_gap;
+  double far_gap;
+  double far_stored;
+  double t;
+  rf_vec3 refined;
+  double bracket;
+  rf_status status;
+  if (seg == NULL || sample == NULL || P2 == NULL || tc == NULL || beta == NULL)
+  {
+    return RF_ERR_NULL_ARGUMENT;
+  }
+  status = rf_validate_cbs_steps(steps);
+  if (status != RF_OK)
+  {
+    return status;
+  }
+  bracket = ldexp(1.0, -steps);
+  if (*beta + bracket > 1.0)
+  {
+    return RF_OK; /* the bracket would reach past E */
+  }
+  far_end = rf_vec3_add(*P2, rf_vec3_scale(rf_vec3_sub(seg->E, seg->S), bracket));
+  rf_dir_texcoord(seg, rf_dir_alpha(seg, far_end.z), far_tc);
+  far_stored = sample(context, far_tc);
+  near_gap = sample(context, tc) - (-P2->z);
+  far_gap = far_stored - (-far_end.z);
+  /* A bracket across the surface has the gap change sign; an empty far texel (a silhouette,
+   * not a crossing) gives no usable slope. */
+  if (!(far_stored > 0.0) || !(near_gap > 0.0) || !(far_gap < 0.0))
+  {
+    return RF_OK;
+  }
+  t = near_gap / (near_gap - far_gap);
+  refined = rf_vec3_add(*P2, rf_vec3_scale(rf_vec3_sub(far_end, *P2), t));
+  rf_dir_texcoord(seg, rf_dir_alpha(seg, refined.z), refined_tc);
+  if (!(sample(context, refined_tc) > 0.0))
+  {
+    return RF_OK;
+  }
+  *P2 = refined;
+  tc[0] = refined_tc[0];
+  tc[1] = refined_tc[1];
+  *beta += t * bracket;
+  return RF_OK;
 }

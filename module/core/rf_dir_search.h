@@ -31,7 +31,8 @@ typedef struct rf_dir_segment
  * projection as a 4x4 ROW-MAJOR matrix (element [row * 4 + col]) applied to
  * column vectors; eq. 8 assumes its w row is (0, 0, -1, 0).
  * Errors: RF_ERR_NULL_ARGUMENT; RF_ERR_NOT_FINITE (non-finite input or
- * projection); RF_ERR_EMPTY_RANGE (see rf_validate_depth_range, and
+ * projection, or depths so small or large that the eq. 9 constants overflow);
+ * RF_ERR_EMPTY_RANGE (see rf_validate_depth_range, and
  * depth_min == depth_max); RF_ERR_DEGENERATE_DIRECTION (|T1.z| < 1e-12, or
  * T1.z > 0: the ray moves toward the camera and never reaches the range, or
  * S or E projects onto or behind the camera plane). On error *seg is left
@@ -68,6 +69,17 @@ rf_status rf_dir_cbs(const rf_dir_segment* seg, int steps, rf_depth_sampler samp
 /* The paper's bound on the CBS error in beta after `steps` steps: 0.5^steps
  * (section 3.3). 1.0 (the whole segment) for negative steps. */
 double rf_cbs_error_bound(int steps);
+
+/* Beyond the paper: one secant step inside the bracket the search ends with (the linear
+ * refinement of relief mapping, Policarpo et al. 2005). After rf_dir_cbs with `steps`
+ * steps the crossing lies between P2 (in front of the stored surface) and
+ * P2 + (E - S) 0.5^steps; where both ends sample valid texels, the crossing of the linear
+ * interpolation of (stored depth - ray depth) replaces P2, and only if its own texel is
+ * valid (the search stays conservative). Exact for a back surface of constant depth.
+ * Updates P2, tc and beta in place; twin of the refinement in rf_dir_cbs of
+ * shaders/rfRefractionFS.glsl. */
+rf_status rf_dir_secant_refine(const rf_dir_segment* seg, int steps, rf_depth_sampler sample,
+  void* context, rf_vec3* P2, double tc[2], double* beta);
 
 #ifdef __cplusplus
 }

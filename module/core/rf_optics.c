@@ -38,10 +38,26 @@ static rf_status prepare_interface(rf_vec3 incident, rf_vec3 normal, double eta,
 }
 
 /* 1 - sin^2(theta_t) from Snell's law n1 sin(theta_i) = n2 sin(theta_t):
- * sin^2(theta_t) = eta^2 (1 - cos^2(theta_i)). Negative means TIR. */
+ * sin^2(theta_t) = eta^2 sin^2(theta_i). Negative means TIR. At normal incidence
+ * (sin^2 = 0) every index transmits: eta^2 may overflow to infinity, and inf * 0 is NaN. */
+static double transmitted_cos_squared_from_sin2(double sin2_incident, double eta)
+{
+  return sin2_incident > 0.0 ? 1.0 - eta * eta * sin2_incident : 1.0;
+}
+
 static double transmitted_cos_squared(double cos_incident, double eta)
 {
-  return 1.0 - eta * eta * (1.0 - cos_incident * cos_incident);
+  return transmitted_cos_squared_from_sin2(1.0 - cos_incident * cos_incident, eta);
+}
+
+/* The part of the unit incident direction along the surface (its length is sin(theta_i)).
+ * Refracting from it, eta T - sqrt(k) N, avoids GLSL refract()'s eta I - eta cos N, which
+ * cancels to rounding noise (and overflows) for large eta: at eta = 1000 a float loses 6% of
+ * the tangential part, a double still 1e-13 relative. Its squared length is also a better
+ * sin^2 than 1 - cos^2 near normal incidence. */
+static rf_vec3 tangential_part(rf_vec3 unit_incident, rf_vec3 facing_normal, double cos_incident)
+{
+  return rf_vec3_sub(unit_incident, rf_vec3_scale(facing_normal, cos_incident));
 }
 
 rf_vec3 rf_reflect(rf_vec3 incident, rf_vec3 normal)
@@ -53,6 +69,7 @@ rf_status rf_refract(rf_vec3 incident, rf_vec3 normal, double eta, rf_vec3* tran
 {
   rf_vec3 unit_incident;
   rf_vec3 facing_normal;
+  rf_vec3 tangential;
   double cos_incident;
   double k;
   rf_status status;
@@ -65,17 +82,27 @@ rf_status rf_refract(rf_vec3 incident, rf_vec3 normal, double eta, rf_vec3* tran
   {
     return status;
   }
+  /* Equal indices are no interface: the ray goes straight on, exactly (the formula below
+   * only up to rounding, which near grazing incidence is not small). Twin of the shader's
+   * short cut for IOR = 1. */
+  if (eta == 1.0)
+  {
+    *transmitted = unit_incident;
+    return RF_OK;
+  }
   cos_incident = rf_vec3_dot(facing_normal, unit_incident); /* <= 0 after the flip */
-  k = transmitted_cos_squared(cos_incident, eta);
+  tangential = tangential_part(unit_incident, facing_normal, cos_incident);
+  k = transmitted_cos_squared_from_sin2(rf_vec3_dot(tangential, tangential), eta);
   if (k < 0.0)
   {
     *transmitted = rf_vec3_normalize(rf_reflect(unit_incident, facing_normal));
     return RF_TIR;
   }
-  /* GLSL refract(): eta I - (eta dot(N, I) + sqrt(k)) N. Unit for unit I and
-   * N; normalizing again only removes rounding. */
-  *transmitted = rf_vec3_normalize(rf_vec3_sub(rf_vec3_scale(unit_incident, eta),
-    rf_vec3_scale(facing_normal, eta * cos_incident + sqrt(k))));
+  /* GLSL refract(), eta I - (eta dot(N, I) + sqrt(k)) N, regrouped as eta T - sqrt(k) N
+   * (T the tangential part): unit for unit I and N; normalizing only removes rounding.
+   * Without TIR eta |T| <= 1, so nothing overflows. */
+  *transmitted = rf_vec3_normalize(
+    rf_vec3_sub(rf_vec3_scale(tangential, eta), rf_vec3_scale(facing_normal, sqrt(k))));
   return RF_OK;
 }
 
@@ -96,7 +123,9 @@ rf_status rf_refract_clamped(rf_vec3 incident, rf_vec3 normal, double eta, rf_ve
     return status;
   }
   cos_incident = rf_vec3_dot(facing_normal, unit_incident);
-  if (transmitted_cos_squared(cos_incident, eta) >= 0.0)
+  tangential = tangential_part(unit_incident, facing_normal, cos_incident);
+  /* The same test as rf_refract's, so the two agree on which side of the critical angle. */
+  if (transmitted_cos_squared_from_sin2(rf_vec3_dot(tangential, tangential), eta) >= 0.0)
   {
     return rf_refract(unit_incident, facing_normal, eta, transmitted);
   }
@@ -105,8 +134,7 @@ rf_status rf_refract_clamped(rf_vec3 incident, rf_vec3 normal, double eta, rf_ve
    * tangential part of the incident direction (which keeps it in the plane
    * of incidence). TIR needs sin(theta_i) > 1/eta > 0, so the tangential
    * part cannot vanish except through rounding; guard anyway. */
-  tangential = rf_vec3_normalize(
-    rf_vec3_sub(unit_incident, rf_vec3_scale(facing_normal, cos_incident)));
+  tangential = rf_vec3_normalize(tangential);
   if (rf_vec3_length(tangential) == 0.0)
   {
     return RF_ERR_DEGENERATE_DIRECTION;
@@ -151,6 +179,12 @@ double rf_fresnel_dielectric(double cos_incident, double eta)
   {
     return NAN;
   }
+  /* Equal indices reflect nothing at any angle; at grazing incidence 1 - (1 - c^2) rounds
+   * to 0 and the formula below would report total reflection. */
+  if (eta == 1.0)
+  {
+    return 0.0;
+  }
   cos_i = clamp_cosine(cos_incident);
   cos_t_squared = transmitted_cos_squared(cos_i, eta);
   if (cos_t_squared <= 0.0)
@@ -177,6 +211,10 @@ double rf_fresnel_schlick(double cos_incident, double eta)
   if (isnan(cos_incident) || rf_validate_ior(eta) != RF_OK)
   {
     return NAN;
+  }
+  if (eta == 1.0)
+  {
+    return 0.0; /* no interface (the formula would give (1 - cos)^5) */
   }
   cos_i = clamp_cosine(cos_incident);
   r0 = (eta - 1.0) / (eta + 1.0); /* = (n_i - n_t) / (n_i + n_t) */

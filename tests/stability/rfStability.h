@@ -26,6 +26,7 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
+#include <vtkTexture.h>
 #include <vtkTextureObject.h>
 
 #include <GL/gl.h>
@@ -33,6 +34,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -114,6 +117,8 @@ public:
 
   void Render(const vtkRenderState* s) override
   {
+    // Filter across cube-map faces (for Rig::UseSmoothEnvironment); core since GL 3.2.
+    glEnable(0x884F /* GL_TEXTURE_CUBE_MAP_SEAMLESS */);
     while (glGetError() != GL_NO_ERROR)
     {
     }
@@ -225,6 +230,58 @@ struct Rig
 
   vtkCamera* Camera() { return this->Renderer->GetActiveCamera(); }
 
+  /**
+   * A smooth environment cube map in place of the built-in pattern (whose ground tiles and
+   * horizon have hard edges): colours are functions of the direction that no signed
+   * permutation of its components changes, so they agree across face edges whatever the face
+   * orientation convention. Used to tell the pass's continuity from the pattern's edges.
+   */
+  void UseSmoothEnvironment(bool on)
+  {
+    if (!on)
+    {
+      this->Renderer->SetEnvironmentTexture(nullptr);
+      return;
+    }
+    const int n = 64;
+    vtkNew<vtkTexture> cube;
+    cube->CubeMapOn();
+    cube->InterpolateOn();
+    cube->MipmapOff();
+    for (int face = 0; face < 6; ++face)
+    {
+      vtkNew<vtkImageData> image;
+      image->SetDimensions(n, n, 1);
+      image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+      for (int j = 0; j < n; ++j)
+      {
+        for (int i = 0; i < n; ++i)
+        {
+          double d[3];
+          d[face / 2] = (face % 2) ? -1.0 : 1.0;
+          d[(face / 2 + 1) % 3] = (i + 0.5) / n * 2.0 - 1.0;
+          d[(face / 2 + 2) % 3] = (j + 0.5) / n * 2.0 - 1.0;
+          const rf_vec3 u = rf_vec3_normalize(rf_vec3_make(d[0], d[1], d[2]));
+          const double rgb[3] = { SmoothR(u), SmoothG(u), SmoothB(u) };
+          auto* px = static_cast<unsigned char*>(image->GetScalarPointer(i, j, 0));
+          for (int c = 0; c < 3; ++c)
+          {
+            px[c] = static_cast<unsigned char>(std::lround(255.0 * rgb[c]));
+          }
+        }
+      }
+      cube->SetInputData(face, image);
+    }
+    this->Renderer->SetEnvironmentTexture(cube);
+  }
+  static double SmoothR(rf_vec3 u)
+  {
+    const double s4 = u.x * u.x * u.x * u.x + u.y * u.y * u.y * u.y + u.z * u.z * u.z * u.z;
+    return 1.5 * s4 - 0.5; // 0 along the diagonals, 1 along the axes
+  }
+  static double SmoothG(rf_vec3 u) { return 1.0 - SmoothR(u); }
+  static double SmoothB(rf_vec3 u) { return 27.0 * (u.x * u.y * u.z) * (u.x * u.y * u.z); }
+
   void LookAt(const double eye[3], const double focal[3], const double up[3], double viewAngle,
     double nearPlane, double farPlane)
   {
@@ -248,7 +305,8 @@ struct Rig
     f.GLErrors = static_cast<int>(this->Probe->GLErrors.size());
     for (unsigned int e : this->Probe->GLErrors)
     {
-      std::fprintf(stderr, "OpenGL error 0x%x after the refraction pass\n", e);
+      std::fprintf(stderr, "OpenGL error 0x%x after the refraction pass (environment: %s)\n", e,
+        this->Renderer->GetEnvironmentTexture() ? "cube map" : "built-in");
     }
     vtkImageData* debug = this->Glass->GetDebugImage();
     const size_t count = static_cast<size_t>(std::max(f.W, 0)) * std::max(f.H, 0);
@@ -542,6 +600,14 @@ inline Change Compare(const Frame& a, const Frame& b)
     for (int k = 0; k < 3; ++k)
     {
       const double d = std::fabs(static_cast<double>(a.Colour[4 * i + k]) - b.Colour[4 * i + k]);
+      if (d > 0.005 && std::getenv("RF_STABILITY_VERBOSE"))
+      {
+        std::printf("  dColour px (%d,%d) %.3g: (%.4f %.4f %.4f) -> (%.4f %.4f %.4f), T2 "
+                    "(%.5f %.5f %.5f) -> (%.5f %.5f %.5f)\n",
+          i % a.W, i / a.W, d, a.RGB(i).x, a.RGB(i).y, a.RGB(i).z, b.RGB(i).x, b.RGB(i).y,
+          b.RGB(i).z, a.T2At(i).x, a.T2At(i).y, a.T2At(i).z, b.T2At(i).x, b.T2At(i).y,
+          b.T2At(i).z);
+      }
       c.Colour = std::max(c.Colour, std::isfinite(d) ? d : 1e30);
     }
   }

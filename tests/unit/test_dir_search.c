@@ -303,12 +303,62 @@ static void test_degenerate_inputs(void)
   }
 }
 
+/* The secant step after the search: exact for a back plane of constant depth (the gap to
+ * the stored depth is linear along the ray), from any number of steps >= 1 that leaves a
+ * bracket across the plane; unchanged where the far end of the bracket is an empty texel. */
+static void test_secant_refinement(void)
+{
+  const rf_dir_segment seg = hand_segment();
+  const double plane_depths[] = { 4.3, 5.3, 5.9 };
+  int c;
+  int p;
+  for (c = 1; c <= 8; ++c)
+  {
+    for (p = 0; p < (int)(sizeof(plane_depths) / sizeof(plane_depths[0])); ++p)
+    {
+      disc_depth_map map = { { 0.5, 0.5 }, 0.4, 0.0, 0, { 0.0, 0.0 } };
+      const double beta_true = (plane_depths[p] - 4.0) / 2.0;
+      rf_vec3 P2;
+      double tc[2];
+      double beta = -1.0;
+      double searched;
+      map.depth = plane_depths[p];
+      CHECK(rf_dir_cbs(&seg, c, sample_disc, &map, &P2, tc, &beta) == RF_OK);
+      searched = beta;
+      CHECK(rf_dir_secant_refine(&seg, c, sample_disc, &map, &P2, tc, &beta) == RF_OK);
+      if (searched + ldexp(1.0, -c) <= 1.0)
+      {
+        CHECK_NEAR(beta, beta_true, 1e-9);
+        CHECK_NEAR(P2.z, -plane_depths[p], 1e-9);
+      }
+      else
+      {
+        CHECK(beta == searched);
+      }
+    }
+  }
+  /* The far end of the bracket outside the silhouette: no slope to use, no change. */
+  {
+    disc_depth_map map = { { 0.5, 0.5 }, 0.22, 5.9, 0, { 0.0, 0.0 } };
+    rf_vec3 P2;
+    double tc[2];
+    double beta;
+    double searched;
+    CHECK(rf_dir_cbs(&seg, 3, sample_disc, &map, &P2, tc, &beta) == RF_OK);
+    searched = beta;
+    CHECK(rf_dir_secant_refine(&seg, 3, sample_disc, &map, &P2, tc, &beta) == RF_OK);
+    CHECK(beta == searched);
+  }
+  CHECK(rf_dir_secant_refine(NULL, 3, sample_disc, NULL, NULL, NULL, NULL) == RF_ERR_NULL_ARGUMENT);
+}
+
 int main(void)
 {
   test_segment_constants();
   test_alpha_and_texcoords();
   test_cbs_error_bound();
   test_cbs_is_conservative();
+  test_secant_refinement();
   test_zero_steps();
   test_degenerate_inputs();
   return RF_TEST_SUMMARY();

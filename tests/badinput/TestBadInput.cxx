@@ -1,0 +1,432 @@
+// Bad input to the refraction pass (label `badinput`): each case puts one bad glass actor (or
+// a bad setting) into a scene with a good glass sphere and an opaque cone, and asserts
+//  - the message: a vtkErrorMacro or vtkWarningMacro naming the actor (class and address) and
+//    the bad value or count, given once per modification, not once per frame;
+//  - the rest of the image: the float colour equals a reference render of the scene without
+//    the bad actor (or with it as an ordinary actor, where it is drawn as one);
+//  - no OpenGL error left by the pass, and no crash.
+// Usage: TestBadInput CASE [WORKDIR]
+#include "../stability/rfStability.h"
+
+#ifdef REFRACTION_HAVE_IO
+#include "vtkRefractionImageIO.h"
+#endif
+
+#include <vtkConeSource.h>
+#include <vtkCellArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationDoubleKey.h>
+#include <vtkInformationIntegerKey.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkSphereSource.h>
+#include <vtkVertexGlyphFilter.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+using namespace rfstab;
+
+namespace
+{
+constexpr int kSize = 96;
+
+#define BAD_REQUIRE(cond, ...)                                                                    \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(cond))                                                                                   \
+    {                                                                                              \
+      std::fprintf(stderr, "FAILED %s:%d: %s: ", __FILE__, __LINE__, #cond);                       \
+      std::fprintf(stderr, __VA_ARGS__);                                                           \
+      std::fprintf(stderr, "\n");                                                                  \
+      return EXIT_FAILURE;                                                                         \
+    }                                                                                              \
+  } while (0)
+
+std::string Address(const void* p)
+{
+  std::ostringstream s;
+  s << p; // as vtkErrorMacro streams a pointer
+  return s.str();
+}
+
+vtkSmartPointer<vtkPolyData> Sphere(double x, double radius)
+{
+  vtkNew<vtkSphereSource> source;
+  source->SetCenter(x, 0.0, 0.0);
+  source->SetRadius(radius);
+  source->SetThetaResolution(48);
+  source->SetPhiResolution(48);
+  source->Update();
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->DeepCopy(source->GetOutput());
+  return poly;
+}
+
+vtkSmartPointer<vtkActor> Actor(vtkPolyData* poly)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(poly);
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+// The rest of the scene: a good glass sphere on the right and an opaque cone at the top.
+void AddRest(Rig& rig)
+{
+  auto glass = Actor(Sphere(1.2, 0.7));
+  vtkRefractionPass::MakeGlass(glass, 1.5);
+  rig.Renderer->AddActor(glass);
+  vtkNew<vtkConeSource> cone;
+  cone->SetCenter(0.0, 1.1, 0.0);
+  cone->SetHeight(0.8);
+  cone->SetRadius(0.4);
+  cone->SetResolution(24);
+  cone->Update();
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  poly->DeepCopy(cone->GetOutput());
+  auto opaque = Actor(poly);
+  opaque->GetProperty()->SetColor(0.9, 0.3, 0.2);
+  rig.Renderer->AddActor(opaque);
+}
+
+void Look(Rig& rig)
+{
+  const double eye[3] = { 0.0, 0.0, 6.0 };
+  const double focal[3] = { 0.0, 0.0, 0.0 };
+  const double up[3] = { 0.0, 1.0, 0.0 };
+  rig.LookAt(eye, focal, up, 40.0, 1.0, 20.0);
+}
+
+// The reference picture: the rest of the scene, plus `subject` as an ordinary actor if given.
+Frame Reference(vtkPolyData* subject)
+{
+  Rig rig(kSize, kSize);
+  AddRest(rig);
+  if (subject)
+  {
+    rig.Renderer->AddActor(Actor(subject));
+  }
+  Look(rig);
+  return rig.Render();
+}
+
+// Largest colour difference between two frames (inf for a size mismatch or NaN).
+double ColourDifference(const Frame& a, const Frame& b)
+{
+  if (a.Colour.size() != b.Colour.size())
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  double worst = 0.0;
+  for (size_t i = 0; i < a.Colour.size(); ++i)
+  {
+    const double d = std::fabs(static_cast<double>(a.Colour[i]) - b.Colour[i]);
+    worst = std::max(worst, std::isfinite(d) ? d : std::numeric_limits<double>::infinity());
+  }
+  return worst;
+}
+
+int GlassPixels(const Frame& f)
+{
+  int n = 0;
+  for (int i = 0; i < f.W * f.H; ++i)
+  {
+    n += f.Glass(i) ? 1 : 0;
+  }
+  return n;
+}
+
+// Renders the scene with `subject` as glass three times; checks the message count against
+// `parts` (exactly one), the GL errors, and the picture against `reference`.
+int CheckScene(MessageLog* log, Rig& rig, const std::string& kind,
+  std::initializer_list<std::string> parts, const Frame& reference, Frame* last = nullptr)
+{
+  Frame f;
+  for (int i = 0; i < 3; ++i)
+  {
+    f = rig.Render();
+    BAD_REQUIRE(f.GLErrors == 0, "OpenGL error after the pass (frame %d)", i);
+    BAD_REQUIRE(f.NonFinite() == 0, "NaN/Inf in the output (frame %d)", i);
+  }
+  const int matching = log->Count(kind, parts);
+  std::printf("%d matching %s message(s) over 3 frames\n", matching, kind.c_str());
+  BAD_REQUIRE(matching == 1, "expected exactly one %s message naming the actor and the value",
+    kind.c_str());
+  const double difference = ColourDifference(f, reference);
+  std::printf("largest colour difference to the reference: %g\n", difference);
+  BAD_REQUIRE(difference <= 1e-5, "the rest of the scene does not render as without the actor");
+  BAD_REQUIRE(GlassPixels(f) > 500, "the good glass sphere is not drawn as glass");
+  if (last)
+  {
+    *last = f;
+  }
+  return EXIT_SUCCESS;
+}
+
+int NonFinitePoints(MessageLog* log, bool infinite)
+{
+  auto poly = Sphere(-1.2, 0.7);
+  const double bad = infinite ? std::numeric_limits<double>::infinity()
+                              : std::numeric_limits<double>::quiet_NaN();
+  poly->GetPoints()->SetPoint(5, bad, 0.0, 0.0);
+  if (infinite)
+  {
+    poly->GetPoints()->SetPoint(9, 0.0, -bad, 0.0);
+  }
+  Rig rig(kSize, kSize);
+  AddRest(rig);
+  auto subject = Actor(poly);
+  BAD_REQUIRE(vtkRefractionPass::MakeGlass(subject, 1.5), "MakeGlass refused a valid IOR");
+  rig.Renderer->AddActor(subject);
+  Look(rig);
+  const Frame reference = Reference(nullptr);
+  const std::string count = infinite ? "2 of " : "1 of ";
+  if (CheckScene(log, rig, "error",
+        { subject->GetClassName(), Address(subject.Get()), count, "NaN or infinite",
+          infinite ? "inf" : "nan" },
+        reference) != EXIT_SUCCESS)
+  {
+    return EXIT_FAILURE;
+  }
+  // A new modification of the data is a new verdict: reported again, once.
+  poly->GetPoints()->Modified();
+  rig.Render();
+  rig.Render();
+  BAD_REQUIRE(log->Count("error", { Address(subject.Get()), "NaN or infinite" }) == 2,
+    "the modified data was not checked again (or reported more than once)");
+  // Repaired data is glass again.
+  poly->GetPoints()->SetPoint(5, -1.2, 0.0, 0.7);
+  poly->GetPoints()->SetPoint(9, -1.2, 0.0, 0.7);
+  poly->GetPoints()->Modified();
+  rig.Render();
+  BAD_REQUIRE(rig.Glass->GetNumberOfGlassProps() == 2, "repaired data is not glass again");
+  return EXIT_SUCCESS;
+}
+
+int EmptyPolyData(MessageLog* log)
+{
+  vtkNew<vtkPolyData> empty;
+  Rig rig(kSize, kSize);
+  AddRest(rig);
+  auto subject = Actor(empty);
+  vtkRefractionPass::MakeGlass(subject, 1.5);
+  rig.Renderer->AddActor(subject);
+  Look(rig);
+  return CheckScene(log, rig, "warning",
+    { subject->GetClassName(), Address(subject.Get()), "empty vtkPolyData", "0 points" }, Reference(nullptr));
+}
+
+int WithoutPolygons(MessageLog* log, bool lines)
+{
+  auto sphere = Sphere(-1.2, 0.7);
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  if (lines)
+  {
+    // Every triangle's outline as a closed polyline: the same points, lines only.
+    vtkNew<vtkCellArray> outlines;
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    vtkCellArray* polys = sphere->GetPolys();
+    for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+    {
+      outlines->InsertNextCell(static_cast<int>(n + 1));
+      for (vtkIdType k = 0; k <= n; ++k)
+      {
+        outlines->InsertCellPoint(ids[k % n]);
+      }
+    }
+    poly->SetPoints(sphere->GetPoints());
+    poly->SetLines(outlines);
+  }
+  else
+  {
+    vtkNew<vtkVertexGlyphFilter> vertices;
+    vertices->SetInputData(sphere);
+    vertices->Update();
+    poly->DeepCopy(vertices->GetOutput());
+  }
+  Rig rig(kSize, kSize);
+  AddRest(rig);
+  auto subject = Actor(poly);
+  vtkRefractionPass::MakeGlass(subject, 1.5);
+  rig.Renderer->AddActor(subject);
+  Look(rig);
+  const std::string count = lines
+    ? std::to_string(poly->GetNumberOfLines()) + " lines"
+    : std::to_string(poly->GetNumberOfVerts()) + " vertices";
+  // Drawn as an ordinary actor: the reference has it as one.
+  return CheckScene(log, rig, "warning", { subject->GetClassName(), Address(subject.Get()), "no polygons", count },
+    Reference(poly));
+}
+
+int BadIndex(MessageLog* log, double ior, const char* printed)
+{
+  auto poly = Sphere(-1.2, 0.7);
+  Rig rig(kSize, kSize);
+  AddRest(rig);
+  auto subject = Actor(poly);
+  BAD_REQUIRE(!vtkRefractionPass::MakeGlass(subject, ior), "MakeGlass accepted IOR %g", ior);
+  BAD_REQUIRE(!vtkRefractionPass::IsGlass(subject), "the actor is marked as glass");
+  BAD_REQUIRE(log->Count("error", { "MakeGlass", subject->GetClassName(), Address(subject.Get()), printed }) ==
+      1,
+    "MakeGlass did not name the actor and the value %s", printed);
+  rig.Renderer->AddActor(subject);
+  Look(rig);
+  const Frame reference = Reference(poly);
+  // The same value set on the keys by hand gets past MakeGlass: the pass reports it (once) and
+  // draws the actor as an ordinary one.
+  vtkNew<vtkInformation> keys;
+  keys->Set(vtkRefractionPass::GLASS(), 1);
+  keys->Set(vtkRefractionPass::INDEX_OF_REFRACTION(), ior);
+  subject->SetPropertyKeys(keys);
+  return CheckScene(log, rig, "error",
+    { "Glass prop", subject->GetClassName(), Address(subject.Get()),
+      std::string("index of refraction ") + printed, "drawn as opaque" },
+    reference);
+}
+
+int ZeroViewport(MessageLog* log)
+{
+  // Renderer A shows glass in a viewport of no pixels; renderer B (the rig's) the rest.
+  Rig rig(kSize, kSize);
+  AddRest(rig);
+  Look(rig);
+  vtkNew<vtkRenderer> empty;
+  vtkNew<vtkRefractionPass> pass;
+  empty->SetPass(pass);
+  empty->SetViewport(0.25, 0.25, 0.25, 0.25);
+  empty->SetLayer(0);
+  auto glass = Actor(Sphere(0.0, 1.0));
+  vtkRefractionPass::MakeGlass(glass, 1.5);
+  empty->AddActor(glass);
+  rig.Window->AddRenderer(empty);
+  // B renders after A and clears its full viewport, so the picture is B's alone.
+  rig.Window->RemoveRenderer(rig.Renderer);
+  rig.Window->AddRenderer(rig.Renderer);
+  const Frame reference = Reference(nullptr);
+  const std::string named = "renderer " + Address(empty.Get());
+  if (CheckScene(log, rig, "warning", { named, "0 x 0 pixels", "1 glass prop" }, reference) !=
+    EXIT_SUCCESS)
+  {
+    return EXIT_FAILURE;
+  }
+  // Pixels again: drawn, no warning; none again: one more warning.
+  empty->SetViewport(0.0, 0.0, 0.5, 0.5);
+  rig.Render();
+  BAD_REQUIRE(pass->GetNumberOfGlassProps() == 1, "glass not drawn once the viewport has pixels");
+  empty->SetViewport(0.5, 0.5, 0.5, 0.5);
+  rig.Render();
+  rig.Render();
+  BAD_REQUIRE(log->Count("warning", { named, "0 x 0 pixels" }) == 2,
+    "the empty viewport is not reported once per change");
+  return EXIT_SUCCESS;
+}
+
+#ifdef REFRACTION_HAVE_IO
+int MissingEnvironment(MessageLog* log, const std::string& workdir)
+{
+  // A missing file and a file that is not an image: no image, a message naming the path.
+  const std::string missing = workdir + "/no_such_environment.hdr";
+  const std::string garbage = workdir + "/not_an_image.exr";
+  {
+    std::ofstream out(garbage, std::ios::binary);
+    out << "this is not an OpenEXR file\n";
+  }
+  for (const std::string& path : { missing, garbage })
+  {
+    std::string error;
+    auto image = vtkRefractionImageIO::ReadImage(path, &error);
+    std::printf("ReadImage(%s): %s\n", path.c_str(), error.c_str());
+    BAD_REQUIRE(image == nullptr, "an image from %s", path.c_str());
+    BAD_REQUIRE(error.find(path) != std::string::npos, "the message does not name %s",
+      path.c_str());
+  }
+  // Without a message pointer the failure still reaches VTK's output (a warning).
+  BAD_REQUIRE(vtkRefractionImageIO::ReadImage(missing, nullptr) == nullptr, "an image");
+  BAD_REQUIRE(log->Count("", { missing }) == 1, "no message for a failure without an error string");
+  // The scene then renders with the built-in environment, exactly as without the attempt.
+  Rig rig(kSize, kSize);
+  AddRest(rig);
+  Look(rig);
+  const Frame f = rig.Render();
+  BAD_REQUIRE(f.GLErrors == 0 && f.NonFinite() == 0, "bad frame");
+  BAD_REQUIRE(ColourDifference(f, Reference(nullptr)) <= 1e-5, "the scene renders differently");
+  BAD_REQUIRE(GlassPixels(f) > 500, "the glass is not drawn");
+  return EXIT_SUCCESS;
+}
+#endif
+}
+
+int main(int argc, char* argv[])
+{
+  if (argc < 2)
+  {
+    std::fprintf(stderr, "usage: %s CASE [WORKDIR]\n", argv[0]);
+    return EXIT_FAILURE;
+  }
+  MessageLog* log = InstallLog();
+  const std::string name = argv[1];
+  const std::string workdir = argc > 2 ? argv[2] : ".";
+  int result = EXIT_FAILURE;
+  if (name == "nan_points")
+  {
+    result = NonFinitePoints(log, false);
+  }
+  else if (name == "inf_points")
+  {
+    result = NonFinitePoints(log, true);
+  }
+  else if (name == "empty_polydata")
+  {
+    result = EmptyPolyData(log);
+  }
+  else if (name == "lines_only")
+  {
+    result = WithoutPolygons(log, true);
+  }
+  else if (name == "vertices_only")
+  {
+    result = WithoutPolygons(log, false);
+  }
+  else if (name == "ior_zero")
+  {
+    result = BadIndex(log, 0.0, "0");
+  }
+  else if (name == "ior_negative")
+  {
+    result = BadIndex(log, -1.5, "-1.5");
+  }
+  else if (name == "ior_nan")
+  {
+    result = BadIndex(log, std::numeric_limits<double>::quiet_NaN(), "nan");
+  }
+  else if (name == "ior_inf")
+  {
+    result = BadIndex(log, std::numeric_limits<double>::infinity(), "inf");
+  }
+  else if (name == "zero_size_viewport")
+  {
+    result = ZeroViewport(log);
+  }
+#ifdef REFRACTION_HAVE_IO
+  else if (name == "missing_environment")
+  {
+    result = MissingEnvironment(log, workdir);
+  }
+#endif
+  else
+  {
+    std::fprintf(stderr, "unknown case %s\n", name.c_str());
+    return EXIT_FAILURE;
+  }
+  std::printf("%s: %s (%d error and %d warning messages in all)\n", name.c_str(),
+    result == EXIT_SUCCESS ? "passed" : "FAILED", log->Count("error"), log->Count("warning"));
+  return result;
+}

@@ -208,7 +208,7 @@ bool vtkRefractionPass::MakeGlass(vtkProp* prop, double indexOfRefraction)
   {
     vtkErrorWithObjectMacro(prop, "vtkRefractionPass::MakeGlass: index of refraction "
         << indexOfRefraction << " rejected for " << prop->GetClassName() << " " << prop << ": "
-        << rf_status_message(status) << " The prop is not marked as glass.");
+        << rf_status_message(status) << ". The prop is not marked as glass.");
     return false;
   }
   vtkInformation* keys = GetOrCreateKeys(prop);
@@ -424,7 +424,7 @@ int vtkRefractionPass::CheckGlassProp(vtkProp* prop)
     // The key was set by hand (MakeGlass refuses): draw the prop as an ordinary actor.
     vtkErrorMacro("Glass prop " << prop->GetClassName() << " " << prop
                                 << " has index of refraction " << ior << ": "
-                                << rf_status_message(status) << " It is drawn as opaque.");
+                                << rf_status_message(status) << ". It is drawn as opaque.");
     check.Verdict = GLASS_AS_ORDINARY;
     return check.Verdict;
   }

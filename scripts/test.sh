@@ -1,22 +1,34 @@
 #!/usr/bin/env bash
 # Every test: install what is missing, build, run ctest (under Xvfb when there is no display).
-# Extra arguments go to ctest (for example -L unit).
+# Extra arguments go to ctest (for example -L unit). The stability table the stability tests
+# write is printed after the run, then ctest's count again as the closing line.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 bash scripts/build.sh
 cd build
-# The stability table (written by the stability tests) is printed after the run.
 table=Testing/stability/stability.md
+log=Testing/last-run.log
+mkdir -p Testing
 rm -f "$table"
-status=0
-if [ -n "${DISPLAY:-}" ]; then
-  ctest --output-on-failure "$@" || status=$?
-else
-  xvfb-run -a -s "-screen 0 1280x1024x24" ctest --output-on-failure "$@" || status=$?
+runner=()
+if [ -z "${DISPLAY:-}" ]; then
+  runner=(xvfb-run -a -s "-screen 0 1280x1024x24")
 fi
+set +e
+"${runner[@]}" ctest --output-on-failure "$@" 2>&1 | tee "$log"
+status=${PIPESTATUS[0]}
+set -e
 if [ -f "$table" ]; then
   echo
   cat "$table"
+fi
+# ctest: "100% tests passed, 0 tests failed out of 59" -> "59 passed, 0 failed"
+summary=$(grep -E "tests passed, [0-9]+ tests failed out of [0-9]+" "$log" | tail -n 1 || true)
+if [ -n "$summary" ]; then
+  failed=$(echo "$summary" | sed -E 's/.* ([0-9]+) tests failed out of ([0-9]+).*/\1/')
+  total=$(echo "$summary" | sed -E 's/.* ([0-9]+) tests failed out of ([0-9]+).*/\2/')
+  echo
+  echo "ctest: $((total - failed)) passed, $failed failed"
 fi
 exit "$status"

@@ -163,7 +163,7 @@ static double sample_from_data(void* context, const double tc[2])
   {
     return 0.0;
   }
-  if (isfinite(tc[0]) && isfinite(tc[1]))
+  if (isfinite(tc[0]) && isfinite(tc[1]) && isfinite(tc[0] * 7.0 + tc[1] * 13.0))
   {
     const double u = fmod(fabs(tc[0] * 7.0 + tc[1] * 13.0), 1.0);
     index = (size_t)(u * (double)(map->size / sizeof(double)));

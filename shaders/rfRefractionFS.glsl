@@ -233,7 +233,8 @@ float rfStoredDepth(vec2 tc)
   {
     return 0.0;
   }
-  return textureLod(rfBackDepth, tc, 0.0).r;
+  // texelFetch: the depths are never filtered, and an unfiltered fetch is the cheapest one.
+  return texelFetch(rfBackDepth, ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0)), 0).r;
 }
 
 // Conservative binary search (algorithm 2) of T1 against the captured back depths; twin of
@@ -324,12 +325,11 @@ bool rf_dir_cbs(vec3 P1, vec3 T1, vec2 depthRange, out vec3 P2, out vec2 tc)
   float texels = length(dt * rfViewport.zw);
   steps = min(steps, int(ceil(log2(max(2.0 * texels, 1.0)))));
 #endif
-  for (int i = 0; i < RF_MAX_SEARCH_STEPS; ++i)
+  // A loop bound known only at run time: with a constant bound (and a break) llvmpipe unrolls
+  // all RF_MAX_SEARCH_STEPS iterations and pays for every texture fetch whatever the steps.
+  steps = min(steps, RF_MAX_SEARCH_STEPS);
+  for (int i = 0; i < steps; ++i)
   {
-    if (i >= steps)
-    {
-      break;
-    }
     dv *= 0.5;
     dbeta *= 0.5;
     float z = P2.z + dv.z;

@@ -471,6 +471,7 @@ std::vector<Setting> Settings(bool smoke)
   }
   settings.push_back({ "DIR", 8, false, true });
   settings.push_back({ "DIR", 5, false, false, true });
+  settings.push_back({ "DIR", 5, false, false, false, true });
   settings.push_back({ "ISR", 0, false, false });
   settings.push_back({ "SSP", 0, false, false });
   return settings;
@@ -487,7 +488,7 @@ void WriteCsv(const std::string& path, const std::vector<Row>& rows, const std::
 {
   std::ofstream f(path);
   f << "renderer,mesh,triangles,size,method,steps,depth_range,adaptive,cpu_ms,gpu_frame_ms,"
-       "gpu_back_ms,gpu_range_ms,gpu_front_ms,plain_cpu_ms,plain_gpu_ms,cpu_ratio,"
+       "back_surface,secant,gpu_back_ms,gpu_range_ms,gpu_front_ms,plain_cpu_ms,plain_gpu_ms,cpu_ratio,"
        "precompute_ms,ref_two_ms,ref_full_ms,bytes_per_pixel,psnr_two,rmse_two,ssim_two,"
        "psnr_full,rmse_full,ssim_full,t2_deg_mean,t2_deg_p95,t2_deg_max,p2_rel_mean,"
        "p2_rel_max,tir_share,ref_tir_share,pixels\n";
@@ -496,7 +497,8 @@ void WriteCsv(const std::string& path, const std::vector<Row>& rows, const std::
     f << '"' << renderer << "\"," << r.Mesh << ',' << r.Triangles << ',' << r.Size << ','
       << r.Config.Method << ',' << r.Config.Steps << ','
       << (r.Config.Bounds ? "bbox" : "reduction") << ',' << (r.Config.Adaptive ? 1 : 0) << ','
-      << r.CpuMs << ',' << r.GpuFrameMs << ',' << r.GpuBackMs << ',' << r.GpuRangeMs << ','
+      << r.CpuMs << ',' << r.GpuFrameMs << ',' << (r.Config.Nearest ? "nearest" : "furthest")
+      << ',' << (r.Config.Paper ? 0 : 1) << ',' << r.GpuBackMs << ',' << r.GpuRangeMs << ','
       << r.GpuFrontMs << ',' << r.PlainCpuMs << ',' << r.PlainGpuMs << ','
       << r.CpuMs / r.PlainCpuMs << ',' << r.PrecomputeMs << ',' << r.RefTwoMs << ','
       << r.RefFullMs << ',' << r.BytesPerPixel << ',' << r.Psnr2 << ',' << r.Rmse2 << ','

@@ -683,7 +683,7 @@ void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp
     this->SceneColorTexture->Activate();
   }
 
-  this->Stage = STAGE_FRONT;
+  this->SetStage(STAGE_FRONT);
   this->StartTimer(TIMED_FRONT);
   this->RenderProps(ren, glass);
   this->StopTimer(TIMED_FRONT);
@@ -691,7 +691,7 @@ void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp
   {
     this->RenderDebugImage(ren, glass);
   }
-  this->Stage = STAGE_NONE;
+  this->SetStage(STAGE_NONE);
 
   if (this->Method == SSP)
   {
@@ -740,9 +740,9 @@ void vtkRefractionPass::CaptureBackSurface(
     ostate->vtkglEnable(GL_DEPTH_TEST);
     ostate->vtkglDepthFunc(this->BackSurface == BACK_SURFACE_NEAREST ? GL_LESS : GL_GREATER);
     ostate->vtkglDisable(GL_BLEND);
-    this->Stage = STAGE_BACK;
+    this->SetStage(STAGE_BACK);
     this->RenderProps(ren, glass);
-    this->Stage = STAGE_NONE;
+    this->SetStage(STAGE_NONE);
   }
   this->ActiveDrawBuffers = 0;
   this->Framebuffer->RemoveColorAttachment(1);
@@ -950,9 +950,9 @@ void vtkRefractionPass::CaptureSceneForSSP(
     ostate->vtkglEnable(GL_BLEND);
     ostate->vtkglBlendFuncSeparate(GL_ZERO, GL_ONE, GL_ONE, GL_CONSTANT_ALPHA);
     glBlendColor(0.f, 0.f, 0.f, 0.5f);
-    this->Stage = STAGE_MASK;
+    this->SetStage(STAGE_MASK);
     this->RenderProps(ren, glass);
-    this->Stage = STAGE_NONE;
+    this->SetStage(STAGE_NONE);
   }
   if (!this->SceneColorTexture || this->SceneColorTexture->GetWidth() != static_cast<unsigned>(this->Width) ||
     this->SceneColorTexture->GetHeight() != static_cast<unsigned>(this->Height))
@@ -1026,9 +1026,9 @@ void vtkRefractionPass::RenderDebugImage(
     ostate->vtkglEnable(GL_DEPTH_TEST);
     ostate->vtkglDepthFunc(GL_LEQUAL);
     ostate->vtkglDisable(GL_BLEND);
-    this->Stage = STAGE_DEBUG;
+    this->SetStage(STAGE_DEBUG);
     this->RenderProps(ren, glass);
-    this->Stage = STAGE_FRONT;
+    this->SetStage(STAGE_FRONT);
     for (int i = 0; i < 2; ++i)
     {
       pixels[i].resize(4 * count);
@@ -1130,7 +1130,23 @@ void vtkRefractionPass::UpdateShaderDefines(vtkOpenGLRenderer* ren)
 //------------------------------------------------------------------------------
 vtkMTimeType vtkRefractionPass::GetShaderStageMTime()
 {
-  return this->ShaderDefinesTime.GetMTime();
+  return std::max(this->ShaderDefinesTime.GetMTime(), this->StageProgramTime.GetMTime());
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::SetStage(int stage)
+{
+  // The back capture and the shading get programs of their own: one program holding both
+  // (switched by a uniform) ran every stage at the speed of the largest (measured on
+  // llvmpipe: the capture alone took longer than a whole plain frame). Switching costs the
+  // mapper a rebuild of the shader source, which the shader cache then finds compiled.
+  this->Stage = stage;
+  const bool back = stage == STAGE_BACK;
+  if (stage != STAGE_NONE && back != this->ProgramIsBack)
+  {
+    this->ProgramIsBack = back;
+    this->StageProgramTime.Modified();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -1179,9 +1195,7 @@ bool vtkRefractionPass::PostReplaceShaderValues(std::string& vertexShader, std::
        // rfSafeNormal: zero or non-finite normals fall back to the face normal (no NaN).
        << "    vec3 rfN = rfSafeNormal("
        << (haveNormal ? "normalVCVSOutput" : "vec3(0.0)") << ", rfP);\n"
-       << "    if (rfStage == RF_STAGE_BACK)\n    {\n"
-       << rfBackCaptureFSSource << "    }\n    else\n    {\n"
-       << refractionBody << "    }\n  }\n";
+       << (this->ProgramIsBack ? rfBackCaptureFSSource : refractionBody.c_str()) << "  }\n";
 
   // Glass is opaque: VTK's alpha test would only keep the rasterizer from testing depth
   // before shading (early depth), which saves the refraction of hidden fragments.
@@ -1255,7 +1269,7 @@ bool vtkRefractionPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstra
   vtkProp* prop, vtkOpenGLVertexArrayObject*)
 {
   if (!vtkOpenGLPolyDataMapper::SafeDownCast(mapper) || !IsGlass(prop) ||
-    this->Stage == STAGE_NONE || !program->IsUniformUsed("rfStage"))
+    this->Stage == STAGE_NONE)
   {
     return true;
   }
@@ -1277,7 +1291,10 @@ bool vtkRefractionPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstra
       program->SetUniformMatrix(name, values);
     }
   };
-  program->SetUniformi("rfStage", this->Stage);
+  if (program->IsUniformUsed("rfStage"))
+  {
+    program->SetUniformi("rfStage", this->Stage);
+  }
   if (program->IsUniformUsed("rfIOR"))
   {
     program->SetUniformf("rfIOR", static_cast<float>(GetIndexOfRefraction(prop)));

@@ -331,7 +331,10 @@ protected:
   void StartTimer(int stage);
   void StopTimer(int stage);
 
+  void SetStage(int stage);
   int Stage = STAGE_NONE;
+  bool ProgramIsBack = false;
+  vtkTimeStamp StageProgramTime;
   int Width = 0;
   int Height = 0;
   int ViewportOrigin[2] = { 0, 0 };

@@ -645,6 +645,17 @@ void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp
   {
     this->WindingCache.clear(); // entries of polydata that went away
   }
+  // Stages this method does not run report no time (not the last method's).
+  if (!this->NeedsBackSurface())
+  {
+    this->StageMilliseconds[TIMED_BACK_CAPTURE] = -1.0;
+    this->Timers[TIMED_BACK_CAPTURE].reset();
+  }
+  if (this->Method != DIR)
+  {
+    this->StageMilliseconds[TIMED_DEPTH_RANGE] = -1.0;
+    this->Timers[TIMED_DEPTH_RANGE].reset();
+  }
   if (this->NeedsBackSurface())
   {
     this->StartTimer(TIMED_BACK_CAPTURE);

@@ -70,6 +70,7 @@ struct Options
   bool Smoke = false;
   bool X11 = false;
   bool Dump = false;
+  std::string FromCsv;
   std::string Bunny = "/usr/share/glmark2/models/bunny.obj";
 };
 
@@ -150,6 +151,8 @@ bool Parse(int argc, char* argv[], Options& o)
       o.X11 = true;
     else if (a == "--dump")
       o.Dump = true;
+    else if (a == "--from-csv" && v)
+      o.FromCsv = argv[++i];
     else
     {
       std::fprintf(stderr, "unknown or incomplete option %s\n", a.c_str());
@@ -457,6 +460,80 @@ void WritePng(const std::string& path, const std::vector<float>& rgb, int size)
   writer->Write();
 }
 
+// Rows back from a results.csv written by WriteCsv, to remake results.md and pareto.png.
+bool ReadCsv(const std::string& path, std::vector<Row>& rows, std::string& renderer)
+{
+  std::ifstream in(path);
+  std::string line;
+  if (!in || !std::getline(in, line))
+  {
+    return false;
+  }
+  auto fields = [](const std::string& text) {
+    std::vector<std::string> out(1);
+    bool quoted = false;
+    for (char c : text)
+    {
+      if (c == '"')
+        quoted = !quoted;
+      else if (c == ',' && !quoted)
+        out.emplace_back();
+      else
+        out.back() += c;
+    }
+    return out;
+  };
+  const auto header = fields(line);
+  while (std::getline(in, line))
+  {
+    const auto f = fields(line);
+    if (f.size() != header.size())
+      continue;
+    std::map<std::string, std::string> v;
+    for (size_t i = 0; i < f.size(); ++i)
+      v[header[i]] = f[i];
+    auto d = [&](const char* k) { return std::atof(v[k].c_str()); };
+    Row r;
+    renderer = v["renderer"];
+    r.Mesh = v["mesh"];
+    r.Triangles = static_cast<vtkIdType>(d("triangles"));
+    r.Size = static_cast<int>(d("size"));
+    r.Config.Method = v["method"];
+    r.Config.Steps = static_cast<int>(d("steps"));
+    r.Config.Bounds = v["depth_range"] == "bbox";
+    r.Config.Adaptive = v["adaptive"] == "1";
+    r.Config.Nearest = v["back_surface"] == "nearest";
+    r.Config.Paper = v["secant"] == "0";
+    r.CpuMs = d("cpu_ms");
+    r.GpuFrameMs = d("gpu_frame_ms");
+    r.GpuBackMs = d("gpu_back_ms");
+    r.GpuRangeMs = d("gpu_range_ms");
+    r.GpuFrontMs = d("gpu_front_ms");
+    r.PlainCpuMs = d("plain_cpu_ms");
+    r.PlainGpuMs = d("plain_gpu_ms");
+    r.PrecomputeMs = d("precompute_ms");
+    r.RefTwoMs = d("ref_two_ms");
+    r.RefFullMs = d("ref_full_ms");
+    r.BytesPerPixel = d("bytes_per_pixel");
+    r.Psnr2 = d("psnr_two");
+    r.Rmse2 = d("rmse_two");
+    r.Ssim2 = d("ssim_two");
+    r.PsnrF = d("psnr_full");
+    r.RmseF = d("rmse_full");
+    r.SsimF = d("ssim_full");
+    r.AngMean = d("t2_deg_mean");
+    r.AngP95 = d("t2_deg_p95");
+    r.AngMax = d("t2_deg_max");
+    r.P2Mean = d("p2_rel_mean");
+    r.P2Max = d("p2_rel_max");
+    r.TirShare = d("tir_share");
+    r.RefTirShare = d("ref_tir_share");
+    r.Pixels = static_cast<long>(d("pixels"));
+    rows.push_back(r);
+  }
+  return !rows.empty();
+}
+
 std::vector<Setting> Settings(bool smoke)
 {
   std::vector<Setting> settings;
@@ -519,7 +596,10 @@ void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
        "render of the same mesh in the same run. Errors on glass pixels only, against the "
        "Embree reference: `two` is the two-interface reference (the approximation's own "
        "error), `full` the Whitted reference (depth 8, Fresnel splits, TIR). ISR's `pre` is "
-       "the per-vertex d_N ray casting (recomputed whenever the points change).\n\n";
+       "the per-vertex d_N ray casting (recomputed whenever the points change). Rows marked "
+       "`paper` run the paper's search without the secant step, `nearest` capture the nearest "
+       "back surface instead of the furthest. Stage times are GL timer queries (on llvmpipe "
+       "they include work queued before the stage); -1 marks a stage the method does not run.\n\n";
   // Table 1 of the paper: fps per model at 512x512 (or the size nearest it).
   std::map<std::string, std::map<std::string, const Row*>> table;
   int tableSize = 0;
@@ -536,7 +616,8 @@ void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
     if (r.Size != tableSize)
       continue;
     std::string key = r.Config.Method;
-    if (r.Config.Method == "DIR" && (r.Config.Steps != 5 || r.Config.Bounds || r.Config.Adaptive))
+    if (r.Config.Method == "DIR" && (r.Config.Steps != 5 || r.Config.Bounds || r.Config.Adaptive ||
+                                      r.Config.Nearest || r.Config.Paper))
       continue;
     table[r.Mesh][key] = &r;
   }
@@ -592,9 +673,10 @@ void WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
   vtkNew<vtkChartMatrix> matrix;
   view->GetScene()->AddItem(matrix);
   matrix->SetSize(vtkVector2i(columns, rowsCount));
-  const char* families[] = { "SIR", "DIR reduction", "DIR bbox", "DIR adaptive", "ISR", "SSP" };
+  const char* families[] = { "SIR", "DIR reduction", "DIR bbox", "DIR adaptive", "ISR", "SSP",
+    "DIR paper (no secant)", "DIR nearest back" };
   const unsigned char colours[][3] = { { 120, 120, 120 }, { 31, 119, 180 }, { 255, 127, 14 },
-    { 44, 160, 44 }, { 214, 39, 40 }, { 148, 103, 189 } };
+    { 44, 160, 44 }, { 214, 39, 40 }, { 148, 103, 189 }, { 140, 86, 75 }, { 23, 190, 207 } };
   for (size_t m = 0; m < meshes.size(); ++m)
   {
     vtkChart* chart = matrix->GetChart(vtkVector2i(static_cast<int>(m % columns),
@@ -603,7 +685,7 @@ void WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
     chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("frame time / plain VTK");
     chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE against the full reference");
     chart->SetShowLegend(m == 0);
-    for (int family = 0; family < 6; ++family)
+    for (int family = 0; family < 8; ++family)
     {
       vtkNew<vtkTable> table;
       vtkNew<vtkFloatArray> x;
@@ -615,13 +697,13 @@ void WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
       std::vector<std::pair<double, double>> points;
       for (const Row& r : rows)
       {
-        if (r.Mesh != meshes[m] || r.Size != plotSize)
+        if (r.Mesh != meshes[m] || r.Size != plotSize || r.Config.Method == "none")
           continue;
         const std::string& method = r.Config.Method;
         const int f = method == "SIR" ? 0
           : method == "ISR" ? 4
           : method == "SSP" ? 5
-          : r.Config.Adaptive ? 3 : r.Config.Bounds ? 2 : 1;
+          : r.Config.Paper ? 6 : r.Config.Nearest ? 7 : r.Config.Adaptive ? 3 : r.Config.Bounds ? 2 : 1;
         if (f == family)
           points.emplace_back(r.CpuMs / r.PlainCpuMs, r.RmseF);
       }
@@ -682,7 +764,27 @@ int main(int argc, char* argv[])
   window->AddRenderer(renderer);
   window->SetSize(options.Sizes.front(), options.Sizes.front());
   window->Render();
-  const std::string rendererName = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  std::string rendererName = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (!options.FromCsv.empty())
+  {
+    // Remake the report of an earlier run (same folder unless --out says otherwise).
+    std::vector<Row> rows;
+    std::string recorded;
+    if (!ReadCsv(options.FromCsv, rows, recorded))
+    {
+      std::fprintf(stderr, "cannot read rows from %s\n", options.FromCsv.c_str());
+      return 1;
+    }
+    if (options.Out.empty())
+    {
+      const size_t slash = options.FromCsv.find_last_of('/');
+      options.Out = slash == std::string::npos ? "." : options.FromCsv.substr(0, slash);
+    }
+    WriteMarkdown(options.Out + "/results.md", rows, recorded, "recorded run", options.Frames);
+    WritePareto(window, options.Out + "/pareto.png", rows);
+    std::printf("remade %s/results.md and pareto.png from %zu rows\n", options.Out.c_str(), rows.size());
+    return 0;
+  }
   if (options.Out.empty())
   {
     options.Out = "bench/results/" + HostKind(rendererName);

@@ -151,11 +151,12 @@ int main(int, char*[])
               "%.4f (radius 1); coverage mismatches %d\n",
     ior, angles.size(), glass->GetSearchSteps(), mean, p95, angles.back(), worstInner, worstP2,
     coverageMismatch);
-  // Tolerances (stated in the README): the search's own bound at 5 steps is 1/32 of the
-  // segment, and the back surface is a 256-sided polygonal sphere read from a 200 px texture.
+  // Tolerances (stated in the README), about 3x what llvmpipe measures (mean 0.028 deg, 0.061
+  // deg inside 0.9 R, P2 0.039): the search with its secant step on a 256-sided polygonal
+  // sphere read from a 200 px texture. The paper's search alone (no secant) misses them.
   RF_REQUIRE(coverageMismatch < 100, "glass pixels do not match the sphere's silhouette");
-  RF_REQUIRE(mean < 1.0, "mean angular error %.3f deg", mean);
-  RF_REQUIRE(worstInner < 0.5, "angular error %.3f deg inside 0.9 R", worstInner);
+  RF_REQUIRE(mean < 0.1, "mean angular error %.3f deg", mean);
+  RF_REQUIRE(worstInner < 0.2, "angular error %.3f deg inside 0.9 R", worstInner);
   RF_REQUIRE(worstP2 < 0.08, "P2 error %.4f inside 0.9 R", worstP2);
 
   // The same measure tells SIR (no second interface) apart: T2 is then T1, far off.

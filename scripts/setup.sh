@@ -3,7 +3,7 @@
 # missing: as root directly, through sudo otherwise. Safe to run again.
 set -euo pipefail
 packages=(cmake g++ make pkg-config libvtk9-dev libglew-dev libegl-dev libegl-mesa0
-  libgl1-mesa-dri xvfb xauth libopenimageio-dev)
+  libgl1-mesa-dri xvfb xauth libopenimageio-dev libembree-dev)
 # clang with libFuzzer (Debian keeps it in libclang-rt-14-dev): the fuzz test of the C core.
 packages+=(clang libclang-rt-14-dev)
 missing=()

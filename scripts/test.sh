@@ -29,7 +29,8 @@ summary=$(grep -E "tests passed, [0-9]+ tests failed out of [0-9]+" "$log" | tai
 if [ -n "$summary" ]; then
   failed=$(echo "$summary" | sed -E 's/.* ([0-9]+) tests failed out of ([0-9]+).*/\1/')
   total=$(echo "$summary" | sed -E 's/.* ([0-9]+) tests failed out of ([0-9]+).*/\2/')
+  skipped=$(grep -cE "^[[:space:]]+[0-9]+ - .* \(Skipped\)$" "$log" || true)
   echo
-  echo "ctest: $((total - failed)) passed, $failed failed"
+  echo "ctest: $((total - failed - skipped)) passed, $failed failed, $skipped skipped"
 fi
 exit "$status"

@@ -40,6 +40,7 @@
 #include "rf_validate.h"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <sstream>
 
@@ -724,13 +725,24 @@ void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp
 void vtkRefractionPass::CaptureBackSurface(
   vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass)
 {
+  const bool nearest = this->BackSurface == BACK_SURFACE_NEAREST;
+  this->RenderIntoTargets(ren, glass, this->BackNormalTexture, this->BackDepthTexture,
+    this->BackZBuffer, nearest ? 1.0 : 0.0, nearest ? GL_LESS : GL_GREATER, STAGE_BACK, nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::RenderIntoTargets(vtkOpenGLRenderer* ren,
+  const std::vector<vtkProp*>& glass, vtkTextureObject* colour0, vtkTextureObject* colour1,
+  vtkTextureObject* depth, double clearDepth, unsigned int depthFunc, int stage,
+  const std::function<void()>& whileBound)
+{
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   vtkOpenGLState* ostate = renWin->GetState();
   this->Framebuffer->SaveCurrentBindingsAndBuffers();
   this->Framebuffer->Bind();
-  this->Framebuffer->AddColorAttachment(0, this->BackNormalTexture);
-  this->Framebuffer->AddColorAttachment(1, this->BackDepthTexture);
-  this->Framebuffer->AddDepthAttachment(this->BackZBuffer);
+  this->Framebuffer->AddColorAttachment(0, colour0);
+  this->Framebuffer->AddColorAttachment(1, colour1);
+  this->Framebuffer->AddDepthAttachment(depth);
   this->Framebuffer->ActivateDrawBuffers(2);
   this->ActiveDrawBuffers = 2;
   {
@@ -745,15 +757,20 @@ void vtkRefractionPass::CaptureBackSurface(
     ostate->vtkglScissor(0, 0, this->Width, this->Height);
     ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
     ostate->vtkglDepthMask(GL_TRUE);
-    ostate->vtkglClearDepth(this->BackSurface == BACK_SURFACE_NEAREST ? 1.0 : 0.0);
+    ostate->vtkglClearDepth(clearDepth);
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     ostate->vtkglClearDepth(1.0);
     ostate->vtkglEnable(GL_DEPTH_TEST);
-    ostate->vtkglDepthFunc(this->BackSurface == BACK_SURFACE_NEAREST ? GL_LESS : GL_GREATER);
+    ostate->vtkglDepthFunc(depthFunc);
     ostate->vtkglDisable(GL_BLEND);
-    this->SetStage(STAGE_BACK);
+    const int previous = this->Stage;
+    this->SetStage(stage);
     this->RenderProps(ren, glass);
-    this->SetStage(STAGE_NONE);
+    this->SetStage(previous);
+    if (whileBound)
+    {
+      whileBound();
+    }
   }
   this->ActiveDrawBuffers = 0;
   this->Framebuffer->RemoveColorAttachment(1);
@@ -1000,7 +1017,6 @@ void vtkRefractionPass::RenderDebugImage(
   vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass)
 {
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  vtkOpenGLState* ostate = renWin->GetState();
   if (!this->DebugTextures[0])
   {
     for (auto& texture : this->DebugTextures)
@@ -1014,44 +1030,16 @@ void vtkRefractionPass::RenderDebugImage(
   }
   const vtkIdType count = static_cast<vtkIdType>(this->Width) * this->Height;
   std::vector<float> pixels[2];
-  this->Framebuffer->SaveCurrentBindingsAndBuffers();
-  this->Framebuffer->Bind();
-  this->Framebuffer->AddColorAttachment(0, this->DebugTextures[0]);
-  this->Framebuffer->AddColorAttachment(1, this->DebugTextures[1]);
-  this->Framebuffer->AddDepthAttachment(this->DebugZBuffer);
-  this->Framebuffer->ActivateDrawBuffers(2);
-  this->ActiveDrawBuffers = 2;
-  {
-    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
-    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
-    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-    ostate->vtkglViewport(0, 0, this->Width, this->Height);
-    ostate->vtkglScissor(0, 0, this->Width, this->Height);
-    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-    ostate->vtkglDepthMask(GL_TRUE);
-    ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    ostate->vtkglEnable(GL_DEPTH_TEST);
-    ostate->vtkglDepthFunc(GL_LEQUAL);
-    ostate->vtkglDisable(GL_BLEND);
-    this->SetStage(STAGE_DEBUG);
-    this->RenderProps(ren, glass);
-    this->SetStage(STAGE_FRONT);
-    for (int i = 0; i < 2; ++i)
-    {
-      pixels[i].resize(4 * count);
-      this->Framebuffer->ActivateReadBuffer(i);
-      glPixelStorei(GL_PACK_ALIGNMENT, 1);
-      glReadPixels(0, 0, this->Width, this->Height, GL_RGBA, GL_FLOAT, pixels[i].data());
-    }
-  }
-  this->ActiveDrawBuffers = 0;
-  this->Framebuffer->RemoveColorAttachment(1);
-  this->Framebuffer->UnBind();
-  this->Framebuffer->RestorePreviousBindingsAndBuffers();
+  this->RenderIntoTargets(ren, glass, this->DebugTextures[0], this->DebugTextures[1],
+    this->DebugZBuffer, 1.0, GL_LEQUAL, STAGE_DEBUG, [&]() {
+      for (int i = 0; i < 2; ++i)
+      {
+        pixels[i].resize(4 * count);
+        this->Framebuffer->ActivateReadBuffer(i);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, this->Width, this->Height, GL_RGBA, GL_FLOAT, pixels[i].data());
+      }
+    });
 
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(this->Width, this->Height, 1);

@@ -35,6 +35,7 @@
 #include "vtkSmartPointer.h"              // For members
 #include "vtkWeakPointer.h"               // For members
 
+#include <functional> // For std::function
 #include <map>    // For members
 #include <memory> // For std::unique_ptr
 #include <string> // For members
@@ -276,6 +277,12 @@ protected:
   void RenderProps(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& props);
   void AllocateTextures(vtkOpenGLRenderWindow* renWin, int width, int height);
   void CaptureBackSurface(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass);
+  // Draws the glass at `stage` into two colour targets and a depth target of the pass's size,
+  // with the GL state it needs restored afterwards; whileBound runs before unbinding.
+  void RenderIntoTargets(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass,
+    vtkTextureObject* colour0, vtkTextureObject* colour1, vtkTextureObject* depth,
+    double clearDepth, unsigned int depthFunc, int stage,
+    const std::function<void()>& whileBound);
   void ReduceDepthRange(vtkOpenGLRenderWindow* renWin);
   void ComputeBoundsDepthRange(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass);
   void RenderDebugImage(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass);

@@ -155,6 +155,17 @@ void rf_dir_texcoord(const rf_dir_segment* seg, double alpha, double tc[2])
   tc[1] = seg->ts[1] + alpha * (seg->te[1] - seg->ts[1]);
 }
 
+/* The arguments rf_dir_cbs and rf_dir_secant_refine share. */
+static rf_status rf_check_search_arguments(const rf_dir_segment* seg, int steps,
+  rf_depth_sampler sample, const rf_vec3* P2, const double* tc, const double* beta)
+{
+  if (seg == NULL || sample == NULL || P2 == NULL || tc == NULL || beta == NULL)
+  {
+    return RF_ERR_NULL_ARGUMENT;
+  }
+  return rf_validate_cbs_steps(steps);
+}
+
 rf_status rf_dir_cbs(const rf_dir_segment* seg, int steps, rf_depth_sampler sample, void* context,
   rf_vec3* P2, double tc[2], double* beta)
 {
@@ -164,11 +175,7 @@ rf_status rf_dir_cbs(const rf_dir_segment* seg, int steps, rf_depth_sampler samp
   double position_beta = 0.0;
   int i;
   rf_status status;
-  if (seg == NULL || sample == NULL || P2 == NULL || tc == NULL || beta == NULL)
-  {
-    return RF_ERR_NULL_ARGUMENT;
-  }
-  status = rf_validate_cbs_steps(steps);
+  status = rf_check_search_arguments(seg, steps, sample, P2, tc, beta);
   if (status != RF_OK)
   {
     return status;
@@ -230,11 +237,7 @@ rf_status rf_dir_secant_refine(const rf_dir_segment* seg, int steps, rf_depth_sa
   rf_vec3 refined;
   double bracket;
   rf_status status;
-  if (seg == NULL || sample == NULL || P2 == NULL || tc == NULL || beta == NULL)
-  {
-    return RF_ERR_NULL_ARGUMENT;
-  }
-  status = rf_validate_cbs_steps(steps);
+  status = rf_check_search_arguments(seg, steps, sample, P2, tc, beta);
   if (status != RF_OK)
   {
     return status;

@@ -6,6 +6,7 @@
 //    the bad actor (or with it as an ordinary actor, where it is drawn as one);
 //  - no OpenGL error left by the pass, and no crash.
 // Usage: TestBadInput CASE [WORKDIR]
+#include "../common/rf_require.h"
 #include "../stability/rfStability.h"
 
 #ifdef REFRACTION_HAVE_IO
@@ -35,17 +36,6 @@ namespace
 {
 constexpr int kSize = 96;
 
-#define BAD_REQUIRE(cond, ...)                                                                    \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(cond))                                                                                   \
-    {                                                                                              \
-      std::fprintf(stderr, "FAILED %s:%d: %s: ", __FILE__, __LINE__, #cond);                       \
-      std::fprintf(stderr, __VA_ARGS__);                                                           \
-      std::fprintf(stderr, "\n");                                                                  \
-      return EXIT_FAILURE;                                                                         \
-    }                                                                                              \
-  } while (0)
 
 std::string Address(const void* p)
 {
@@ -152,17 +142,17 @@ int CheckScene(MessageLog* log, Rig& rig, const std::string& kind,
   for (int i = 0; i < 3; ++i)
   {
     f = rig.Render();
-    BAD_REQUIRE(f.GLErrors == 0, "OpenGL error after the pass (frame %d)", i);
-    BAD_REQUIRE(f.NonFinite() == 0, "NaN/Inf in the output (frame %d)", i);
+    RF_REQUIRE(f.GLErrors == 0, "OpenGL error after the pass (frame %d)", i);
+    RF_REQUIRE(f.NonFinite() == 0, "NaN/Inf in the output (frame %d)", i);
   }
   const int matching = log->Count(kind, parts);
   std::printf("%d matching %s message(s) over 3 frames\n", matching, kind.c_str());
-  BAD_REQUIRE(matching == 1, "expected exactly one %s message naming the actor and the value",
+  RF_REQUIRE(matching == 1, "expected exactly one %s message naming the actor and the value",
     kind.c_str());
   const double difference = ColourDifference(f, reference);
   std::printf("largest colour difference to the reference: %g\n", difference);
-  BAD_REQUIRE(difference <= 1e-5, "the rest of the scene does not render as without the actor");
-  BAD_REQUIRE(GlassPixels(f) > 500, "the good glass sphere is not drawn as glass");
+  RF_REQUIRE(difference <= 1e-5, "the rest of the scene does not render as without the actor");
+  RF_REQUIRE(GlassPixels(f) > 500, "the good glass sphere is not drawn as glass");
   if (last)
   {
     *last = f;
@@ -183,7 +173,7 @@ int NonFinitePoints(MessageLog* log, bool infinite)
   Rig rig(kSize, kSize);
   AddRest(rig);
   auto subject = Actor(poly);
-  BAD_REQUIRE(vtkRefractionPass::MakeGlass(subject, 1.5), "MakeGlass refused a valid IOR");
+  RF_REQUIRE(vtkRefractionPass::MakeGlass(subject, 1.5), "MakeGlass refused a valid IOR");
   rig.Renderer->AddActor(subject);
   Look(rig);
   const Frame reference = Reference(nullptr);
@@ -199,14 +189,14 @@ int NonFinitePoints(MessageLog* log, bool infinite)
   poly->GetPoints()->Modified();
   rig.Render();
   rig.Render();
-  BAD_REQUIRE(log->Count("error", { Address(subject.Get()), "NaN or infinite" }) == 2,
+  RF_REQUIRE(log->Count("error", { Address(subject.Get()), "NaN or infinite" }) == 2,
     "the modified data was not checked again (or reported more than once)");
   // Repaired data is glass again.
   poly->GetPoints()->SetPoint(5, -1.2, 0.0, 0.7);
   poly->GetPoints()->SetPoint(9, -1.2, 0.0, 0.7);
   poly->GetPoints()->Modified();
   rig.Render();
-  BAD_REQUIRE(rig.Glass->GetNumberOfGlassProps() == 2, "repaired data is not glass again");
+  RF_REQUIRE(rig.Glass->GetNumberOfGlassProps() == 2, "repaired data is not glass again");
   return EXIT_SUCCESS;
 }
 
@@ -272,9 +262,9 @@ int BadIndex(MessageLog* log, double ior, const char* printed)
   Rig rig(kSize, kSize);
   AddRest(rig);
   auto subject = Actor(poly);
-  BAD_REQUIRE(!vtkRefractionPass::MakeGlass(subject, ior), "MakeGlass accepted IOR %g", ior);
-  BAD_REQUIRE(!vtkRefractionPass::IsGlass(subject), "the actor is marked as glass");
-  BAD_REQUIRE(log->Count("error", { "MakeGlass", subject->GetClassName(), Address(subject.Get()), printed }) ==
+  RF_REQUIRE(!vtkRefractionPass::MakeGlass(subject, ior), "MakeGlass accepted IOR %g", ior);
+  RF_REQUIRE(!vtkRefractionPass::IsGlass(subject), "the actor is marked as glass");
+  RF_REQUIRE(log->Count("error", { "MakeGlass", subject->GetClassName(), Address(subject.Get()), printed }) ==
       1,
     "MakeGlass did not name the actor and the value %s", printed);
   rig.Renderer->AddActor(subject);
@@ -320,11 +310,11 @@ int ZeroViewport(MessageLog* log)
   // Pixels again: drawn, no warning; none again: one more warning.
   empty->SetViewport(0.0, 0.0, 0.5, 0.5);
   rig.Render();
-  BAD_REQUIRE(pass->GetNumberOfGlassProps() == 1, "glass not drawn once the viewport has pixels");
+  RF_REQUIRE(pass->GetNumberOfGlassProps() == 1, "glass not drawn once the viewport has pixels");
   empty->SetViewport(0.5, 0.5, 0.5, 0.5);
   rig.Render();
   rig.Render();
-  BAD_REQUIRE(log->Count("warning", { named, "0 x 0 pixels" }) == 2,
+  RF_REQUIRE(log->Count("warning", { named, "0 x 0 pixels" }) == 2,
     "the empty viewport is not reported once per change");
   return EXIT_SUCCESS;
 }
@@ -344,21 +334,21 @@ int MissingEnvironment(MessageLog* log, const std::string& workdir)
     std::string error;
     auto image = vtkRefractionImageIO::ReadImage(path, &error);
     std::printf("ReadImage(%s): %s\n", path.c_str(), error.c_str());
-    BAD_REQUIRE(image == nullptr, "an image from %s", path.c_str());
-    BAD_REQUIRE(error.find(path) != std::string::npos, "the message does not name %s",
+    RF_REQUIRE(image == nullptr, "an image from %s", path.c_str());
+    RF_REQUIRE(error.find(path) != std::string::npos, "the message does not name %s",
       path.c_str());
   }
   // Without a message pointer the failure still reaches VTK's output (a warning).
-  BAD_REQUIRE(vtkRefractionImageIO::ReadImage(missing, nullptr) == nullptr, "an image");
-  BAD_REQUIRE(log->Count("", { missing }) == 1, "no message for a failure without an error string");
+  RF_REQUIRE(vtkRefractionImageIO::ReadImage(missing, nullptr) == nullptr, "an image");
+  RF_REQUIRE(log->Count("", { missing }) == 1, "no message for a failure without an error string");
   // The scene then renders with the built-in environment, exactly as without the attempt.
   Rig rig(kSize, kSize);
   AddRest(rig);
   Look(rig);
   const Frame f = rig.Render();
-  BAD_REQUIRE(f.GLErrors == 0 && f.NonFinite() == 0, "bad frame");
-  BAD_REQUIRE(ColourDifference(f, Reference(nullptr)) <= 1e-5, "the scene renders differently");
-  BAD_REQUIRE(GlassPixels(f) > 500, "the glass is not drawn");
+  RF_REQUIRE(f.GLErrors == 0 && f.NonFinite() == 0, "bad frame");
+  RF_REQUIRE(ColourDifference(f, Reference(nullptr)) <= 1e-5, "the scene renders differently");
+  RF_REQUIRE(GlassPixels(f) > 500, "the glass is not drawn");
   return EXIT_SUCCESS;
 }
 #endif

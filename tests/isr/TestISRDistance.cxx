@@ -1,6 +1,7 @@
 // ISR's per-vertex d_N against closed forms: on a sphere the inward normal runs through the
 // centre, so d_N is the diameter; on a slab (a thin box) it is the thickness; on an open
 // mesh (a hemisphere's rim ray leaves it) the filter reports 0 rather than garbage.
+#include "../common/rf_require.h"
 #include "vtkISRDistanceFilter.h"
 
 #include <vtkCubeSource.h>
@@ -16,17 +17,6 @@
 #include <cstdio>
 #include <cstdlib>
 
-#define CHECK(cond, ...)                                                                          \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(cond))                                                                                   \
-    {                                                                                              \
-      std::fprintf(stderr, "FAILED %s:%d: %s: ", __FILE__, __LINE__, #cond);                       \
-      std::fprintf(stderr, __VA_ARGS__);                                                           \
-      std::fprintf(stderr, "\n");                                                                  \
-      return EXIT_FAILURE;                                                                         \
-    }                                                                                              \
-  } while (0)
 
 int main()
 {
@@ -40,7 +30,7 @@ int main()
   sphereDistances->SetInputConnection(sphere->GetOutputPort());
   sphereDistances->Update();
   vtkDataArray* d = sphereDistances->GetOutput()->GetPointData()->GetArray("ISRNormalDistance");
-  CHECK(d != nullptr, "no ISRNormalDistance array");
+  RF_REQUIRE(d != nullptr, "no ISRNormalDistance array");
   const double facetGap = 1.5 * (1.0 - std::cos(3.14159265358979 / 96.0));
   double worst = 0.0;
   for (vtkIdType i = 0; i < d->GetNumberOfTuples(); ++i)
@@ -49,7 +39,7 @@ int main()
   }
   std::printf("sphere R=1.5: max |d_N - 3| = %.2e (facet gap %.2e), %.2f ms\n", worst, facetGap,
     sphereDistances->GetLastComputeSeconds() * 1e3);
-  CHECK(worst <= facetGap + 1e-5, "d_N is off the diameter by %g", worst);
+  RF_REQUIRE(worst <= facetGap + 1e-5, "d_N is off the diameter by %g", worst);
 
   // Slab 4 x 4 x 0.3: the vertices of the large faces have normals along z (split normals of
   // vtkCubeSource), so d_N = 0.3 there.
@@ -65,7 +55,7 @@ int main()
   vtkPolyData* out = slabDistances->GetOutput();
   vtkDataArray* sd = out->GetPointData()->GetArray("ISRNormalDistance");
   vtkDataArray* normals = out->GetPointData()->GetNormals();
-  CHECK(sd && normals, "slab arrays missing");
+  RF_REQUIRE(sd && normals, "slab arrays missing");
   int faceVertices = 0;
   for (vtkIdType i = 0; i < sd->GetNumberOfTuples(); ++i)
   {
@@ -74,11 +64,11 @@ int main()
     if (std::abs(std::abs(n[2]) - 1.0) < 1e-9)
     {
       ++faceVertices;
-      CHECK(std::abs(sd->GetComponent(i, 0) - 0.3) < 1e-5, "slab d_N %g at vertex %lld",
+      RF_REQUIRE(std::abs(sd->GetComponent(i, 0) - 0.3) < 1e-5, "slab d_N %g at vertex %lld",
         sd->GetComponent(i, 0), static_cast<long long>(i));
     }
   }
-  CHECK(faceVertices == 8, "expected 8 vertices on the large faces, found %d", faceVertices);
+  RF_REQUIRE(faceVertices == 8, "expected 8 vertices on the large faces, found %d", faceVertices);
 
   // An open hemisphere: rays from the rim region may leave through the opening: 0, finite.
   vtkNew<vtkSphereSource> half;
@@ -92,7 +82,7 @@ int main()
   for (vtkIdType i = 0; i < hd->GetNumberOfTuples(); ++i)
   {
     const double v = hd->GetComponent(i, 0);
-    CHECK(std::isfinite(v) && v >= 0.0 && v <= 2.0 + 1e-6, "open mesh d_N %g", v);
+    RF_REQUIRE(std::isfinite(v) && v >= 0.0 && v <= 2.0 + 1e-6, "open mesh d_N %g", v);
   }
   std::printf("slab: d_N = 0.3 on all %d face vertices; open mesh: all finite\n", faceVertices);
   return EXIT_SUCCESS;

@@ -3,6 +3,7 @@
 #ifndef rfTestScene_h
 #define rfTestScene_h
 
+#include "../common/rf_require.h"
 #include "vtkRefractionPass.h"
 
 #include <vtkActor.h>
@@ -111,16 +112,5 @@ inline int MaxChannelDifference(vtkImageData* a, vtkImageData* b)
   return worst;
 }
 
-#define RF_REQUIRE(cond, ...)                                                                     \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(cond))                                                                                   \
-    {                                                                                              \
-      std::fprintf(stderr, "FAILED %s:%d: %s: ", __FILE__, __LINE__, #cond);                       \
-      std::fprintf(stderr, __VA_ARGS__);                                                           \
-      std::fprintf(stderr, "\n");                                                                  \
-      return EXIT_FAILURE;                                                                         \
-    }                                                                                              \
-  } while (0)
 }
 #endif

@@ -1319,24 +1319,28 @@ bool vtkRefractionPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstra
       static_cast<float>(this->Width), static_cast<float>(this->Height) };
     program->SetUniform4f("rfViewport", viewport);
   }
+  bool environmentBound = false;
   if (this->Stage != STAGE_BACK)
   {
     setSampler("rfBackNormal", this->BackNormalTexture);
     setSampler("rfBackDepth", this->BackDepthTexture);
     setSampler("rfDepthRangeTex",
       this->ReductionLevels.empty() ? nullptr : this->ReductionLevels.back().Get());
-    if (this->UseEnvironmentCube && program->IsUniformUsed("rfEnvironmentCube"))
+    if (this->UseEnvironmentCube && this->CurrentEnvironment &&
+      program->IsUniformUsed("rfEnvironmentCube"))
     {
       program->SetUniformi("rfEnvironmentCube",
         static_cast<vtkOpenGLTexture*>(this->CurrentEnvironment)->GetTextureUnit());
+      environmentBound = true;
     }
   }
-  else if (program->IsUniformUsed("rfEnvironmentCube"))
+  // The cube map is bound for the shading stages only (the back capture and SSP's mask stage
+  // run before it is, and sample nothing), but a draw fails (GL_INVALID_OPERATION) while
+  // sampler uniforms of different types share a unit, and on a new program they all say
+  // unit 0. Point the cube map at the highest unit, which VTK's unit manager (lowest first)
+  // leaves free; the 2D samplers keep 0 or the distinct units of the last front stage.
+  if (!environmentBound && program->IsUniformUsed("rfEnvironmentCube"))
   {
-    // The back capture samples nothing, but a draw fails (GL_INVALID_OPERATION) while sampler
-    // uniforms of different types share a unit, and on a new program they all say unit 0.
-    // Point the cube map at the highest unit, which VTK's unit manager (lowest first) leaves
-    // free; the 2D samplers keep 0 or the distinct units of the last front stage.
     GLint units = 0;
     glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &units);
     program->SetUniformi("rfEnvironmentCube", std::max(units - 1, 1));

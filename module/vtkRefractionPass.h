@@ -33,28 +33,24 @@
 #include "vtkMatrix4x4.h"                 // For members
 #include "vtkNew.h"                       // For members
 #include "vtkSmartPointer.h"              // For members
-#include "vtkWeakPointer.h"               // For members
 
-#include <functional> // For std::function
-#include <map>    // For members
 #include <memory> // For std::unique_ptr
-#include <string> // For members
 #include <vector> // For members
 
 class vtkImageData;
 class vtkInformationDoubleKey;
 class vtkInformationIntegerKey;
-class vtkOpenGLFramebufferObject;
-class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderTimer;
-class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
-class vtkMapper;
-class vtkPolyData;
 class vtkProp;
+class vtkRefractionDepthRange;
+class vtkRefractionGeometryStage;
+class vtkRefractionGlassChecker;
+class vtkRefractionMethod;
 class vtkRefractionOpaqueStep;
+class vtkRefractionShadeStage;
+class vtkRefractionTargets;
 class vtkTexture;
-class vtkTextureObject;
 
 class VTKRENDERINGREFRACTION_EXPORT vtkRefractionPass : public vtkOpenGLRenderPass
 {
@@ -228,18 +224,22 @@ public:
    */
   enum TimedStageType
   {
-    TIMED_BACK_CAPTURE = 0,
-    TIMED_DEPTH_RANGE = 1,
-    TIMED_FRONT = 2,
-    TIMED_STAGE_COUNT = 3
+    TIMED_BACK_CAPTURE = 0, ///< DIR pass 1 (DIR, ISR)
+    TIMED_DEPTH_RANGE = 1,  ///< DIR pass 2 (DIR)
+    TIMED_FRONT = 2,        ///< the front G-buffer (and SSP's mask and scene copy)
+    TIMED_SHADE = 3,        ///< the refraction, once per glass pixel
+    TIMED_STAGE_COUNT = 4
   };
+  /// "back capture", "depth range", "front", "shade" (nullptr for an unknown stage).
+  static const char* GetStageName(int stage);
   vtkSetMacro(GPUTiming, bool);
   vtkGetMacro(GPUTiming, bool);
   vtkBooleanMacro(GPUTiming, bool);
   double GetStageMilliseconds(int stage);
   ///@}
 
-  /// Bytes of GPU textures the pass holds (capture, reduction, debug), for memory reports.
+  /// Bytes of the GPU render targets the pass holds for the method of its last render (as
+  /// the driver reports their formats), for memory reports.
   unsigned long long GetTextureBytes() const;
 
   /// Number of glass props drawn by the last render.
@@ -248,50 +248,18 @@ public:
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
-  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
-  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
-    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
-  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
-    vtkOpenGLVertexArrayObject* vao = nullptr) override;
-  vtkMTimeType GetShaderStageMTime() override;
-
 protected:
   vtkRefractionPass();
   ~vtkRefractionPass() override;
 
-  enum StageType
-  {
-    STAGE_NONE = 0,
-    STAGE_BACK = 1,
-    STAGE_FRONT = 2,
-    STAGE_DEBUG = 3,
-    STAGE_MASK = 4
-  };
-
   friend class vtkRefractionOpaqueStep;
   int RenderOpaqueAndGlass(const vtkRenderState* s, vtkRenderPass* opaque);
   void RenderGlass(const vtkRenderState* s, std::vector<vtkProp*>& glass);
-  void SplitProps(const vtkRenderState* s, std::vector<vtkProp*>& glass,
-    std::vector<vtkProp*>* others);
-  void RenderProps(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& props);
-  void AllocateTextures(vtkOpenGLRenderWindow* renWin, int width, int height);
-  void CaptureBackSurface(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass);
-  // Draws the glass at `stage` into two colour targets and a depth target of the pass's size,
-  // with the GL state it needs restored afterwards; whileBound runs before unbinding.
-  void RenderIntoTargets(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass,
-    vtkTextureObject* colour0, vtkTextureObject* colour1, vtkTextureObject* depth,
-    double clearDepth, unsigned int depthFunc, int stage,
-    const std::function<void()>& whileBound);
-  void ReduceDepthRange(vtkOpenGLRenderWindow* renWin);
-  void ComputeBoundsDepthRange(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass);
-  void RenderDebugImage(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass);
-  void UpdateShaderDefines(vtkOpenGLRenderer* ren);
-  void CaptureSceneForSSP(vtkOpenGLRenderer* ren, const std::vector<vtkProp*>& glass);
-  void MapISRAttribute(vtkProp* prop);
-  int GetWindingSign(vtkProp* prop);
-  bool NeedsBackSurface() const { return this->Method == DIR || this->Method == ISR; }
-  void UpdateCameraUniforms(vtkOpenGLRenderer* ren);
+  void UpdateCamera(vtkOpenGLRenderer* ren);
+  vtkTexture* GetCubeEnvironment(vtkOpenGLRenderer* ren);
+  void CopySceneColor(vtkOpenGLRenderer* ren);
+  void StartTimer(int stage);
+  void StopTimer(int stage);
 
   vtkRenderPass* DelegatePass = nullptr;
   vtkSmartPointer<vtkRefractionOpaqueStep> OpaqueStep;
@@ -305,65 +273,35 @@ protected:
   bool AdaptiveSearch = false;
   bool SecantRefinement = true;
   int BackSurface = BACK_SURFACE_FURTHEST;
-  std::map<vtkPolyData*, std::pair<vtkMTimeType, int>> WindingCache;
-  /// SplitProps' verdict on a glass prop (IOR, points, cells), kept until its index or its
-  /// data change, so a static scene scans no points and repeats no message per frame.
-  enum GlassVerdictType
-  {
-    GLASS_OK = 0,
-    GLASS_AS_ORDINARY = 1, ///< drawn as an ordinary actor (bad IOR, no polygons)
-    GLASS_SKIPPED = 2      ///< not drawn (empty, NaN or infinite points)
-  };
-  struct GlassCheck
-  {
-    vtkMTimeType Time = 0; ///< the data's
-    const void* Data = nullptr;
-    double IOR = 0.0;
-    int Verdict = GLASS_OK;
-  };
-  std::map<vtkProp*, GlassCheck> GlassChecks;
-  int CheckGlassProp(vtkProp* prop);
-  bool WarnedEmptyViewport = false;
   double SSPStrength = 0.05;
   double SSPFresnelBias = 0.4;
   double SSPFresnelPower = 5.0;
   double ChromaticAberration = 0.0;
   bool SSPRefractionMask = true;
-  std::vector<vtkWeakPointer<vtkMapper>> ISRMappers;
-  vtkSmartPointer<vtkTextureObject> SceneColorTexture;
-  int NumberOfGlassProps = 0;
   bool GPUTiming = false;
-  std::unique_ptr<vtkOpenGLRenderTimer> Timers[TIMED_STAGE_COUNT];
-  double StageMilliseconds[TIMED_STAGE_COUNT] = { -1.0, -1.0, -1.0 };
-  void StartTimer(int stage);
-  void StopTimer(int stage);
+  int NumberOfGlassProps = 0;
 
-  void SetStage(int stage);
-  int Stage = STAGE_NONE;
-  bool ProgramIsBack = false;
-  vtkTimeStamp StageProgramTime;
+  vtkNew<vtkRefractionGlassChecker> GlassChecker;
+  vtkNew<vtkRefractionTargets> Targets;
+  vtkNew<vtkRefractionGeometryStage> GeometryStage;
+  vtkNew<vtkRefractionDepthRange> DepthRange;
+  vtkNew<vtkRefractionShadeStage> ShadeStage;
+  vtkSmartPointer<vtkRefractionMethod> MethodObject;
+  int MethodObjectType = -1;
+  std::unique_ptr<vtkOpenGLRenderTimer> Timers[TIMED_STAGE_COUNT];
+  double StageMilliseconds[TIMED_STAGE_COUNT] = { -1.0, -1.0, -1.0, -1.0 };
+
+  bool WarnedEmptyViewport = false;
+  bool WarnedEnvironment = false;
   int Width = 0;
   int Height = 0;
   int ViewportOrigin[2] = { 0, 0 };
   double BoundsDepthRange[2] = { 0.0, 0.0 };
-  bool UseEnvironmentCube = false;
-  vtkTexture* CurrentEnvironment = nullptr;
   vtkNew<vtkMatrix4x4> ProjectionGL;
   vtkNew<vtkMatrix4x4> InverseProjectionGL;
   float ViewToWorld[9] = { 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f };
   float EnvironmentMatrix[9] = { 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f };
-  int Parallel = 0;
-  std::string ShaderDefines;
-  vtkTimeStamp ShaderDefinesTime;
-
-  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
-  vtkSmartPointer<vtkTextureObject> BackNormalTexture;
-  vtkSmartPointer<vtkTextureObject> BackDepthTexture;
-  vtkSmartPointer<vtkTextureObject> BackZBuffer;
-  std::vector<vtkSmartPointer<vtkTextureObject>> ReductionLevels;
-  std::unique_ptr<vtkOpenGLQuadHelper> ReductionQuad;
-  vtkSmartPointer<vtkTextureObject> DebugTextures[2];
-  vtkSmartPointer<vtkTextureObject> DebugZBuffer;
+  bool Parallel = false;
   vtkSmartPointer<vtkImageData> DebugImage;
 
 private:

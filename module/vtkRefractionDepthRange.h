@@ -1,0 +1,51 @@
+/**
+ * @class   vtkRefractionDepthRange
+ * @brief   DIR pass 2: the range [Zmin, Zmax] of the captured back depths.
+ *
+ * Either a min/max reduction on the GPU by halving full-screen passes (GLSL 1.50 has no
+ * compute shaders here) into the targets' RG32F chain, down to 1x1 (R = min, G = max), or,
+ * as the paper's section 5 suggests, the range of the glass props' bounding boxes on the CPU.
+ */
+#ifndef vtkRefractionDepthRange_h
+#define vtkRefractionDepthRange_h
+
+#include "vtkObject.h"
+
+#include <memory> // For members
+#include <vector> // For ComputeBounds
+
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkProp;
+class vtkRefractionTargets;
+class vtkRenderer;
+class vtkWindow;
+
+class vtkRefractionDepthRange : public vtkObject
+{
+public:
+  static vtkRefractionDepthRange* New();
+  vtkTypeMacro(vtkRefractionDepthRange, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Reduces BACK_DEPTH into the targets' reduction chain. Returns false on a shader error.
+  bool Reduce(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets);
+
+  /// The depth range (positive distances) of the props' bounding boxes, clipped to the near
+  /// plane (parts of a box behind it are never captured: the search starts there).
+  static void ComputeBounds(vtkRenderer* ren, const std::vector<vtkProp*>& props, double range[2]);
+
+  void ReleaseGraphicsResources(vtkWindow* w);
+
+protected:
+  vtkRefractionDepthRange();
+  ~vtkRefractionDepthRange() override;
+
+private:
+  vtkRefractionDepthRange(const vtkRefractionDepthRange&) = delete;
+  void operator=(const vtkRefractionDepthRange&) = delete;
+
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+};
+
+#endif

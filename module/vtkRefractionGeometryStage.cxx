@@ -1,0 +1,431 @@
+#include "vtkRefractionGeometryStage.h"
+
+#include "vtkActor.h"
+#include "vtkCellArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLPolyDataMapper.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLState.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRefractionPass.h"
+#include "vtkRefractionTargets.h"
+#include "vtkRenderState.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include "rfShaders.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(vtkRefractionGeometryStage);
+
+namespace
+{
+const char* const kImplMarker = "//RF::Impl";
+const char* const kDecTag = "//RF::Geometry::Dec";
+const char* const kImplTag = "//RF::Geometry::Impl";
+
+bool IsGlassMapper(vtkAbstractMapper* mapper, vtkProp* prop)
+{
+  return vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && vtkRefractionPass::IsGlass(prop);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkRefractionGeometryStage::vtkRefractionGeometryStage() = default;
+vtkRefractionGeometryStage::~vtkRefractionGeometryStage() = default;
+
+//------------------------------------------------------------------------------
+void vtkRefractionGeometryStage::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Glass props: " << this->Glass.size() << "\n";
+  os << indent << "NormalDistance: " << this->NormalDistance << "\n";
+  os << indent << "BackNearest: " << this->BackNearest << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionGeometryStage::Render(const vtkRenderState*)
+{
+  // Drawn through DrawFront, DrawBack and DrawMask only.
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
+  bool normalDistance, bool backNearest, vtkMatrix4x4* inverseProjection, bool parallel)
+{
+  this->Glass = glass;
+  this->MaterialIndex.clear();
+  for (size_t i = 0; i < glass.size(); ++i)
+  {
+    this->MaterialIndex[glass[i]] = static_cast<int>(i);
+  }
+  this->NormalDistance = normalDistance;
+  this->BackNearest = backNearest;
+  this->InverseProjection->DeepCopy(inverseProjection);
+  this->Parallel = parallel;
+  std::ostringstream defines;
+  if (normalDistance)
+  {
+    defines << "#define RF_GBUFFER_NORMAL_DISTANCE\n";
+  }
+  if (backNearest)
+  {
+    defines << "#define RF_BACK_NEAREST\n";
+  }
+  if (defines.str() != this->Defines)
+  {
+    this->Defines = defines.str();
+    this->DefinesTime.Modified();
+  }
+  if (this->WindingCache.size() > 4 * glass.size() + 16)
+  {
+    this->WindingCache.clear(); // entries of polydata that went away
+  }
+  if (normalDistance)
+  {
+    for (vtkProp* prop : glass)
+    {
+      this->MapNormalDistance(prop);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkRefractionGeometryStage::GetShaderStageMTime()
+{
+  return this->DefinesTime.GetMTime();
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionGeometryStage::DrawProps(vtkOpenGLRenderer* ren, int stage)
+{
+  vtkRenderState state(ren);
+  state.SetPropArrayAndCount(this->Glass.data(), static_cast<int>(this->Glass.size()));
+  this->PreRender(&state);
+  this->Stage = stage;
+  this->NumberOfRenderedProps = 0;
+  for (vtkProp* prop : this->Glass)
+  {
+    this->NumberOfRenderedProps += prop->RenderOpaqueGeometry(ren);
+  }
+  this->Stage = STAGE_NONE;
+  this->PostRender(&state);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionGeometryStage::DrawIntoTargets(vtkOpenGLRenderer* ren,
+  vtkRefractionTargets* targets, int colour0, int colour1, int depth, double clearDepth,
+  unsigned int depthFunc, int stage)
+{
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
+  vtkTextureObject* first = targets->Get(colour0);
+  vtkTextureObject* second = colour1 >= 0 ? targets->Get(colour1) : nullptr;
+  this->Width = static_cast<int>(first->GetWidth());
+  this->Height = static_cast<int>(first->GetHeight());
+  this->Origin[0] = 0;
+  this->Origin[1] = 0;
+  fbo->SaveCurrentBindingsAndBuffers();
+  fbo->Bind();
+  fbo->AddColorAttachment(0, first);
+  const int buffers = second ? 2 : 1;
+  if (second)
+  {
+    fbo->AddColorAttachment(1, second);
+  }
+  fbo->AddDepthAttachment(targets->Get(depth));
+  fbo->ActivateDrawBuffers(buffers);
+  this->ActiveDrawBuffers = buffers;
+  {
+    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+    ostate->vtkglViewport(0, 0, this->Width, this->Height);
+    ostate->vtkglScissor(0, 0, this->Width, this->Height);
+    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglDepthMask(GL_TRUE);
+    ostate->vtkglClearDepth(clearDepth);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    ostate->vtkglClearDepth(1.0);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(depthFunc);
+    ostate->vtkglDisable(GL_BLEND);
+    this->DrawProps(ren, stage);
+  }
+  this->ActiveDrawBuffers = 0;
+  if (second)
+  {
+    fbo->RemoveColorAttachment(1);
+  }
+  fbo->UnBind();
+  fbo->RestorePreviousBindingsAndBuffers();
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionGeometryStage::DrawFront(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets)
+{
+  this->DrawIntoTargets(ren, targets, vtkRefractionTargets::FRONT_SURFACE,
+    this->NormalDistance ? vtkRefractionTargets::FRONT_AUX : -1, vtkRefractionTargets::FRONT_DEPTH,
+    1.0, GL_LESS, STAGE_FRONT);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionGeometryStage::DrawBack(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets)
+{
+  this->DrawIntoTargets(ren, targets, vtkRefractionTargets::BACK_NORMAL,
+    vtkRefractionTargets::BACK_DEPTH, vtkRefractionTargets::BACK_Z, this->BackNearest ? 1.0 : 0.0,
+    this->BackNearest ? GL_LESS : GL_GREATER, STAGE_BACK);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionGeometryStage::DrawMask(vtkOpenGLRenderer* ren)
+{
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  ren->GetTiledSizeAndOrigin(&this->Width, &this->Height, this->Origin, this->Origin + 1);
+  // The chapter's refraction mask, in the alpha channel of the opaque scene: where the glass
+  // is the visible surface, alpha becomes 0.25 + 0.5 alpha (0.75 over an object, 0.25 over
+  // the background); elsewhere it stays 1 (objects, including those in front) or 0.
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_TRUE);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_LEQUAL);
+  ostate->vtkglEnable(GL_BLEND);
+  // The stage writes alpha 0.5: 0.5 * 0.5 + (1 - 0.5) * alpha, with no blend colour to set.
+  ostate->vtkglBlendFuncSeparate(GL_ZERO, GL_ONE, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  this->DrawProps(ren, STAGE_MASK);
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionGeometryStage::PreReplaceShaderValues(std::string& vertexShader, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
+{
+  if (!IsGlassMapper(mapper, prop))
+  {
+    return true;
+  }
+  // VTK's lighting would be computed per fragment and thrown away: the geometry stage writes
+  // every output itself. The tags stay for the mapper; ours follow them.
+  vtkShaderProgram::Substitute(
+    fragmentShader, "//VTK::Light::Impl", "gl_FragData[0] = vec4(1.0);\n", false);
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
+    std::string("//VTK::Output::Dec\n") + kDecTag + "\n", false);
+  vtkShaderProgram::Substitute(fragmentShader, "//VTK::Coincident::Impl",
+    std::string("//VTK::Coincident::Impl\n") + kImplTag + "\n", false);
+  if (this->NormalDistance)
+  {
+    // d_N travels as a generic vertex attribute (MapNormalDistance) to a varying.
+    vtkShaderProgram::Substitute(vertexShader, "//VTK::Normal::Dec",
+      "//VTK::Normal::Dec\nin float rfNormalDistance;\nout float rfNormalDistanceVSOut;\n", false);
+    vtkShaderProgram::Substitute(vertexShader, "//VTK::Normal::Impl",
+      "//VTK::Normal::Impl\n  rfNormalDistanceVSOut = rfNormalDistance;\n", false);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionGeometryStage::PostReplaceShaderValues(std::string&, std::string&,
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
+{
+  if (!IsGlassMapper(mapper, prop))
+  {
+    return true;
+  }
+  const std::string source = rfGeometryFSSource;
+  const size_t marker = source.find(kImplMarker);
+  std::string declarations = source.substr(0, marker);
+  const std::string body = source.substr(marker + std::string(kImplMarker).size());
+  vtkShaderProgram::Substitute(declarations, "//RF::Common", rfCommonSource);
+  // The mapper declares vertexVC only with lighting, and normalVCVSOutput only with normals
+  // or lighting; otherwise rebuild them from the fragment's coordinates.
+  const bool haveVertexVC = fragmentShader.find("vec4 vertexVC") != std::string::npos;
+  const bool haveNormal = fragmentShader.find("normalVCVSOutput") != std::string::npos;
+  std::ostringstream defines;
+  defines << this->Defines << "#define RF_POSITION_VC "
+          << (haveVertexVC ? "vertexVC.xyz" : "rfReconstructPositionVC()") << "\n"
+          << "#define RF_NORMAL_VC " << (haveNormal ? "normalVCVSOutput" : "vec3(0.0)") << "\n";
+  if (fragmentShader.find(kDecTag) == std::string::npos ||
+    fragmentShader.find(kImplTag) == std::string::npos)
+  {
+    vtkErrorMacro("The mapper's fragment shader has no //VTK::Output::Dec or "
+                  "//VTK::Coincident::Impl tag; the glass cannot be drawn.");
+    return false;
+  }
+  vtkShaderProgram::Substitute(fragmentShader, kDecTag, defines.str() + declarations, false);
+  vtkShaderProgram::Substitute(fragmentShader, kImplTag, body, false);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
+  vtkAbstractMapper* mapper, vtkProp* prop, vtkOpenGLVertexArrayObject*)
+{
+  if (!IsGlassMapper(mapper, prop) || this->Stage == STAGE_NONE)
+  {
+    return true;
+  }
+  auto material = this->MaterialIndex.find(prop);
+  program->SetUniformi("rfGeometryStage", this->Stage);
+  if (program->IsUniformUsed("rfMaterial"))
+  {
+    program->SetUniformf("rfMaterial",
+      material == this->MaterialIndex.end() ? 1.f : static_cast<float>(material->second + 1));
+  }
+  if (program->IsUniformUsed("rfParallel"))
+  {
+    program->SetUniformi("rfParallel", this->Parallel ? 1 : 0);
+  }
+  if (program->IsUniformUsed("rfDCVC"))
+  {
+    program->SetUniformMatrix("rfDCVC", this->InverseProjection);
+  }
+  if (program->IsUniformUsed("rfViewport"))
+  {
+    // gl_FragCoord counts from the window's corner on screen (the mask), from the texture's
+    // in the targets.
+    const float viewport[4] = { static_cast<float>(this->Origin[0]),
+      static_cast<float>(this->Origin[1]), static_cast<float>(this->Width),
+      static_cast<float>(this->Height) };
+    program->SetUniform4f("rfViewport", viewport);
+  }
+  if (program->IsUniformUsed("rfWindingSign"))
+  {
+    program->SetUniformi("rfWindingSign", this->GetWindingSign(prop));
+  }
+  if (program->IsUniformUsed("rfHaveNormalDistance"))
+  {
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    vtkPolyData* poly = vtkPolyData::SafeDownCast(
+      vtkOpenGLPolyDataMapper::SafeDownCast(mapper)->GetInputDataObject(0, 0));
+    const bool have =
+      poly && poly->GetPointData()->GetArray(vtkRefractionPass::GetISRDistanceArrayName());
+    program->SetUniformi("rfHaveNormalDistance", have ? 1 : 0);
+    // d_N is measured in model coordinates: scale it with the actor.
+    double scale = 1.0;
+    if (actor)
+    {
+      vtkMatrix4x4* m = actor->GetMatrix();
+      double columns[3] = { 0.0, 0.0, 0.0 };
+      for (int c = 0; c < 3; ++c)
+      {
+        columns[c] = std::sqrt(m->GetElement(0, c) * m->GetElement(0, c) +
+          m->GetElement(1, c) * m->GetElement(1, c) + m->GetElement(2, c) * m->GetElement(2, c));
+      }
+      scale = std::cbrt(columns[0] * columns[1] * columns[2]);
+    }
+    program->SetUniformf("rfModelScale", static_cast<float>(scale));
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkRefractionGeometryStage::GetWindingSign(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
+  vtkPolyData* poly = mapper ? vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+  if (!poly)
+  {
+    return 1;
+  }
+  auto cached = this->WindingCache.find(poly);
+  if (cached != this->WindingCache.end() && cached->second.first == poly->GetMTime())
+  {
+    return cached->second.second;
+  }
+  // The signed volume of a closed mesh is positive when its polygons wind counter-clockwise
+  // seen from outside (the OpenGL front face). Measured about the bounds' centre so that far
+  // offset coordinates keep their precision.
+  double bounds[6];
+  poly->GetBounds(bounds);
+  const double centre[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]) };
+  double volume = 0.0;
+  vtkCellArray* polys = poly->GetPolys();
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  double a[3];
+  double b[3];
+  double c[3];
+  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+  {
+    if (count < 3)
+    {
+      continue;
+    }
+    poly->GetPoint(ids[0], a);
+    for (int k = 0; k < 3; ++k)
+    {
+      a[k] -= centre[k];
+    }
+    for (vtkIdType j = 1; j + 1 < count; ++j)
+    {
+      poly->GetPoint(ids[j], b);
+      poly->GetPoint(ids[j + 1], c);
+      for (int k = 0; k < 3; ++k)
+      {
+        b[k] -= centre[k];
+        c[k] -= centre[k];
+      }
+      volume += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+        a[2] * (b[0] * c[1] - b[1] * c[0]);
+    }
+  }
+  const int sign = volume < 0.0 ? -1 : 1;
+  this->WindingCache[poly] = std::make_pair(poly->GetMTime(), sign);
+  return sign;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionGeometryStage::MapNormalDistance(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  vtkOpenGLPolyDataMapper* mapper =
+    actor ? vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
+  if (!mapper)
+  {
+    return;
+  }
+  for (const auto& mapped : this->NormalDistanceMappers)
+  {
+    if (mapped == mapper)
+    {
+      return;
+    }
+  }
+  const char* name = vtkRefractionPass::GetISRDistanceArrayName();
+  vtkPolyData* poly = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
+  if (!poly || !poly->GetPointData()->GetArray(name))
+  {
+    vtkWarningMacro("ISR: glass actor " << actor << " has no point array \"" << name
+                                        << "\" (vtkISRDistanceFilter adds it); using d_N = d_V.");
+  }
+  mapper->MapDataArrayToVertexAttribute(
+    "rfNormalDistance", name, vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
+  this->NormalDistanceMappers.erase(
+    std::remove_if(this->NormalDistanceMappers.begin(), this->NormalDistanceMappers.end(),
+      [](const vtkWeakPointer<vtkMapper>& m) { return m == nullptr; }),
+    this->NormalDistanceMappers.end());
+  this->NormalDistanceMappers.emplace_back(mapper);
+}

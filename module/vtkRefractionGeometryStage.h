@@ -1,0 +1,102 @@
+/**
+ * @class   vtkRefractionGeometryStage
+ * @brief   Draws the glass props through VTK's own mappers into the glass G-buffer.
+ *
+ * The mapper-side part of vtkRefractionPass: it injects shaders/rfGeometryFS.glsl into the
+ * mappers' shaders through VTK's //VTK:: tags (as vtkSSAOPass and vtkDualDepthPeelingPass
+ * do) and draws the glass props for one of three stages: the front G-buffer (normal, depth,
+ * material, ISR's d_N), the back-surface capture of DIR, or SSP's refraction mask. All three
+ * share one program per mapper (a uniform selects), so switching stages rebuilds nothing.
+ * GL state is set through vtkOpenGLState and restored after each stage.
+ */
+#ifndef vtkRefractionGeometryStage_h
+#define vtkRefractionGeometryStage_h
+
+#include "vtkOpenGLRenderPass.h"
+#include "vtkNew.h"       // For members
+#include "vtkWeakPointer.h" // For members
+
+#include <map>    // For members
+#include <string> // For members
+#include <vector> // For members
+
+class vtkMapper;
+class vtkMatrix4x4;
+class vtkOpenGLRenderer;
+class vtkPolyData;
+class vtkProp;
+class vtkRefractionTargets;
+
+class vtkRefractionGeometryStage : public vtkOpenGLRenderPass
+{
+public:
+  static vtkRefractionGeometryStage* New();
+  vtkTypeMacro(vtkRefractionGeometryStage, vtkOpenGLRenderPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum StageType
+  {
+    STAGE_NONE = 0,
+    STAGE_FRONT = 1,
+    STAGE_BACK = 2,
+    STAGE_MASK = 3
+  };
+
+  /**
+   * Settings of the next draws: the glass props (their position is their material index),
+   * whether the G-buffer carries ISR's d_N, whether the back capture keeps the nearest
+   * back-facing surface, the camera's inverse projection (GL layout) and projection type.
+   */
+  void Configure(const std::vector<vtkProp*>& glass, bool normalDistance, bool backNearest,
+    vtkMatrix4x4* inverseProjection, bool parallel);
+
+  /// The front G-buffer (FRONT_SURFACE, FRONT_AUX when configured, FRONT_DEPTH).
+  void DrawFront(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets);
+  /// The back capture (BACK_NORMAL, BACK_DEPTH, BACK_Z).
+  void DrawBack(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets);
+  /// SSP's refraction mask into the alpha of the framebuffer bound now.
+  void DrawMask(vtkOpenGLRenderer* ren);
+
+  /// Props drawn by the last draw.
+  int GetNumberOfDrawnProps() const { return this->NumberOfRenderedProps; }
+
+  void Render(const vtkRenderState* s) override;
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* vao = nullptr) override;
+  vtkMTimeType GetShaderStageMTime() override;
+
+protected:
+  vtkRefractionGeometryStage();
+  ~vtkRefractionGeometryStage() override;
+
+private:
+  vtkRefractionGeometryStage(const vtkRefractionGeometryStage&) = delete;
+  void operator=(const vtkRefractionGeometryStage&) = delete;
+
+  void DrawIntoTargets(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int colour0,
+    int colour1, int depth, double clearDepth, unsigned int depthFunc, int stage);
+  void DrawProps(vtkOpenGLRenderer* ren, int stage);
+  int GetWindingSign(vtkProp* prop);
+  void MapNormalDistance(vtkProp* prop);
+
+  std::vector<vtkProp*> Glass;
+  std::map<vtkProp*, int> MaterialIndex;
+  std::map<vtkPolyData*, std::pair<vtkMTimeType, int>> WindingCache;
+  std::vector<vtkWeakPointer<vtkMapper>> NormalDistanceMappers;
+  bool NormalDistance = false;
+  bool BackNearest = false;
+  bool Parallel = false;
+  vtkNew<vtkMatrix4x4> InverseProjection;
+  int Stage = STAGE_NONE;
+  int Width = 0;
+  int Height = 0;
+  int Origin[2] = { 0, 0 };
+  std::string Defines;
+  vtkTimeStamp DefinesTime;
+};
+
+#endif

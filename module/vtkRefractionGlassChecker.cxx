@@ -1,0 +1,175 @@
+#include "vtkRefractionGlassChecker.h"
+
+#include "vtkActor.h"
+#include "vtkDataArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProp.h"
+#include "vtkPropCollection.h"
+#include "vtkRefractionPass.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+
+#include "rf_validate.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkRefractionGlassChecker);
+
+//------------------------------------------------------------------------------
+void vtkRefractionGlassChecker::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Checked props: " << this->GlassChecks.size() << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionGlassChecker::SplitProps(
+  const vtkRenderState* s, std::vector<vtkProp*>& glass, std::vector<vtkProp*>* others)
+{
+  glass.clear();
+  if (others)
+  {
+    others->clear();
+  }
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (!vtkRefractionPass::IsGlass(prop))
+    {
+      if (others)
+      {
+        others->push_back(prop);
+      }
+      continue;
+    }
+    const int verdict = this->CheckGlassProp(prop);
+    if (verdict == GLASS_AS_ORDINARY && others)
+    {
+      others->push_back(prop);
+    }
+    else if (verdict == GLASS_OK)
+    {
+      glass.push_back(prop);
+    }
+  }
+  // Glass props the renderer culled never reach the prop array (an empty vtkPolyData has no
+  // bounds and is culled first): they still deserve their message, once (CheckGlassProp).
+  vtkPropCollection* viewProps = s->GetRenderer() ? s->GetRenderer()->GetViewProps() : nullptr;
+  if (viewProps && viewProps->GetNumberOfItems() > s->GetPropArrayCount())
+  {
+    vtkProp** arrayEnd = s->GetPropArray() + s->GetPropArrayCount();
+    vtkCollectionSimpleIterator it;
+    viewProps->InitTraversal(it);
+    while (vtkProp* prop = viewProps->GetNextProp(it))
+    {
+      if (prop->GetVisibility() && vtkRefractionPass::IsGlass(prop) &&
+        std::find(s->GetPropArray(), arrayEnd, prop) == arrayEnd)
+      {
+        this->CheckGlassProp(prop);
+      }
+    }
+  }
+  if (this->GlassChecks.size() > 4 * glass.size() + 16)
+  {
+    this->GlassChecks.clear(); // entries of props that went away
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkRefractionGlassChecker::CheckGlassProp(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  vtkPolyDataMapper* mapper = actor ? vtkPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
+  vtkPolyData* poly = nullptr;
+  if (mapper && mapper->GetNumberOfInputConnections(0) > 0)
+  {
+    // What the mapper is about to draw (as GetBounds does; free when up to date).
+    mapper->Update();
+    poly = mapper->GetInput();
+  }
+  // The verdict depends on the index and on the data only. Not on the prop's or its keys'
+  // modification times: every render adds and removes the pass on the keys, and moving an
+  // actor should not rescan its points.
+  const double ior = vtkRefractionPass::GetIndexOfRefraction(prop);
+  const vtkMTimeType time = poly ? poly->GetMTime() : 0;
+  auto cached = this->GlassChecks.find(prop);
+  if (cached != this->GlassChecks.end() && cached->second.Time == time &&
+    cached->second.Data == poly &&
+    (cached->second.IOR == ior || (std::isnan(cached->second.IOR) && std::isnan(ior))))
+  {
+    return cached->second.Verdict;
+  }
+  GlassCheck& check = this->GlassChecks[prop];
+  check.Time = time;
+  check.Data = poly;
+  check.IOR = ior;
+  check.Verdict = GLASS_OK;
+
+  const rf_status status = rf_validate_ior(ior);
+  if (status != RF_OK)
+  {
+    // The key was set by hand (MakeGlass refuses): draw the prop as an ordinary actor.
+    vtkErrorMacro("Glass prop " << prop->GetClassName() << " " << prop
+                                << " has index of refraction " << ior << ": "
+                                << rf_status_message(status) << ". It is drawn as opaque.");
+    check.Verdict = GLASS_AS_ORDINARY;
+    return check.Verdict;
+  }
+  if (!poly)
+  {
+    return check.Verdict; // not a polydata actor: nothing to check here
+  }
+  const vtkIdType points = poly->GetNumberOfPoints();
+  const vtkIdType surfaces = poly->GetNumberOfPolys() + poly->GetNumberOfStrips();
+  if (points == 0 || poly->GetNumberOfCells() == 0)
+  {
+    vtkWarningMacro("Glass prop " << prop->GetClassName() << " " << prop
+                                  << " has an empty vtkPolyData (" << points << " points, "
+                                  << poly->GetNumberOfCells() << " cells): nothing to draw.");
+    check.Verdict = GLASS_SKIPPED;
+    return check.Verdict;
+  }
+  // One scan per modification: NaN or infinite coordinates would reach the capture as NaN
+  // depths and normals, which the filtered normal texture spreads to the neighbours.
+  vtkDataArray* coordinates = poly->GetPoints()->GetData();
+  vtkIdType bad = 0;
+  vtkIdType first = -1;
+  double firstPoint[3] = { 0.0, 0.0, 0.0 };
+  for (vtkIdType i = 0; i < points; ++i)
+  {
+    double p[3];
+    coordinates->GetTuple(i, p);
+    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+    {
+      if (bad++ == 0)
+      {
+        first = i;
+        std::copy(p, p + 3, firstPoint);
+      }
+    }
+  }
+  if (bad > 0)
+  {
+    vtkErrorMacro("Glass prop " << prop->GetClassName() << " " << prop << " has " << bad
+                                << " of " << points
+                                << " points with NaN or infinite coordinates (the first: point "
+                                << first << " = (" << firstPoint[0] << ", " << firstPoint[1]
+                                << ", " << firstPoint[2] << ")): it is not drawn.");
+    check.Verdict = GLASS_SKIPPED;
+    return check.Verdict;
+  }
+  if (surfaces == 0)
+  {
+    vtkWarningMacro("Glass prop " << prop->GetClassName() << " " << prop << " has no polygons ("
+                                  << poly->GetNumberOfVerts() << " vertices, "
+                                  << poly->GetNumberOfLines()
+                                  << " lines): glass needs surfaces; it is drawn as an ordinary "
+                                     "actor.");
+    check.Verdict = GLASS_AS_ORDINARY;
+  }
+  return check.Verdict;
+}

@@ -1,0 +1,58 @@
+/**
+ * @class   vtkRefractionGlassChecker
+ * @brief   Sorts a render state's props into glass and the rest, and checks the glass.
+ *
+ * A glass prop with a bad index of refraction (set on the keys by hand) or without polygons
+ * is drawn as an ordinary actor; one with an empty vtkPolyData or NaN/infinite points is not
+ * drawn. Each verdict is reported once, with the prop and the value, and kept until the
+ * prop's index or data change, so a static scene scans no points and repeats no message.
+ */
+#ifndef vtkRefractionGlassChecker_h
+#define vtkRefractionGlassChecker_h
+
+#include "vtkObject.h"
+
+#include <map>    // For members
+#include <vector> // For SplitProps
+
+class vtkProp;
+class vtkRenderState;
+
+class vtkRefractionGlassChecker : public vtkObject
+{
+public:
+  static vtkRefractionGlassChecker* New();
+  vtkTypeMacro(vtkRefractionGlassChecker, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The state's props: the glass to draw as glass, and (when `others` is given) the rest,
+  /// including glass props drawn as ordinary actors.
+  void SplitProps(const vtkRenderState* s, std::vector<vtkProp*>& glass,
+    std::vector<vtkProp*>* others);
+
+protected:
+  vtkRefractionGlassChecker() = default;
+  ~vtkRefractionGlassChecker() override = default;
+
+private:
+  vtkRefractionGlassChecker(const vtkRefractionGlassChecker&) = delete;
+  void operator=(const vtkRefractionGlassChecker&) = delete;
+
+  enum GlassVerdictType
+  {
+    GLASS_OK = 0,
+    GLASS_AS_ORDINARY = 1, ///< drawn as an ordinary actor (bad IOR, no polygons)
+    GLASS_SKIPPED = 2      ///< not drawn (empty, NaN or infinite points)
+  };
+  struct GlassCheck
+  {
+    vtkMTimeType Time = 0; ///< the data's
+    const void* Data = nullptr;
+    double IOR = 0.0;
+    int Verdict = GLASS_OK;
+  };
+  int CheckGlassProp(vtkProp* prop);
+  std::map<vtkProp*, GlassCheck> GlassChecks;
+};
+
+#endif

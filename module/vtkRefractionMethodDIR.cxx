@@ -1,0 +1,48 @@
+#include "vtkRefractionMethodDIR.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkRefractionPass.h"
+#include "vtkShaderProgram.h"
+
+#include "rfShaders.h"
+#include "rf_validate.h"
+
+vtkStandardNewMacro(vtkRefractionMethodDIR);
+
+//------------------------------------------------------------------------------
+void vtkRefractionMethodDIR::AppendDefines(std::ostream& defines, vtkRefractionPass* settings) const
+{
+  this->Superclass::AppendDefines(defines, settings);
+  defines << "#define RF_MAX_SEARCH_STEPS " << RF_CBS_MAX_STEPS << "\n";
+  if (settings->GetAdaptiveSearch())
+  {
+    defines << "#define RF_ADAPTIVE_SEARCH\n";
+  }
+  if (settings->GetSecantRefinement())
+  {
+    defines << "#define RF_SECANT_REFINE\n";
+  }
+  if (settings->GetDepthRangeMode() == vtkRefractionPass::DEPTH_RANGE_BOUNDS)
+  {
+    defines << "#define RF_DEPTH_RANGE_BOUNDS\n";
+  }
+}
+
+//------------------------------------------------------------------------------
+std::string vtkRefractionMethodDIR::GetShaderSource() const
+{
+  return std::string(rfBackSurfaceSource) + rfMethodDIRSource;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionMethodDIR::SetUniforms(
+  vtkShaderProgram* program, vtkRefractionPass* settings, const double boundsDepthRange[2]) const
+{
+  program->SetUniformi("rfSearchSteps", settings->GetSearchSteps());
+  if (program->IsUniformUsed("rfDepthRangeBounds"))
+  {
+    const float range[2] = { static_cast<float>(boundsDepthRange[0]),
+      static_cast<float>(boundsDepthRange[1]) };
+    program->SetUniform2f("rfDepthRangeBounds", range);
+  }
+}

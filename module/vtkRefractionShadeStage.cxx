@@ -1,0 +1,306 @@
+#include "vtkRefractionShadeStage.h"
+
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLTexture.h"
+#include "vtkPointData.h"
+#include "vtkRefractionMethod.h"
+#include "vtkRefractionPass.h"
+#include "vtkRefractionTargets.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include "rfShaders.h"
+#include "vtk_glew.h"
+
+#include <sstream>
+
+vtkStandardNewMacro(vtkRefractionShadeStage);
+
+struct vtkRefractionShadeStage::Program
+{
+  std::string Source;
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+};
+
+namespace
+{
+// The sampler each target is bound to when the shading program reads it.
+struct TargetSampler
+{
+  int Target;
+  const char* Name;
+};
+const TargetSampler kSamplers[] = {
+  { vtkRefractionTargets::FRONT_SURFACE, "rfFrontSurface" },
+  { vtkRefractionTargets::FRONT_DEPTH, "rfFrontDepth" },
+  { vtkRefractionTargets::FRONT_AUX, "rfFrontAux" },
+  { vtkRefractionTargets::BACK_NORMAL, "rfBackNormal" },
+  { vtkRefractionTargets::BACK_DEPTH, "rfBackDepth" },
+  { vtkRefractionTargets::SCENE_COLOR, "rfSceneColor" },
+};
+}
+
+//------------------------------------------------------------------------------
+vtkRefractionShadeStage::vtkRefractionShadeStage() = default;
+vtkRefractionShadeStage::~vtkRefractionShadeStage() = default;
+
+//------------------------------------------------------------------------------
+void vtkRefractionShadeStage::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Shading program: " << (this->Shade ? "built" : "none") << "\n";
+  os << indent << "Debug program: " << (this->Debug ? "built" : "none") << "\n";
+}
+
+//------------------------------------------------------------------------------
+vtkRefractionShadeStage::Program* vtkRefractionShadeStage::GetProgram(bool debug)
+{
+  std::unique_ptr<Program>& program = debug ? this->Debug : this->Shade;
+  if (!program)
+  {
+    program.reset(new Program);
+  }
+  return program.get();
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMethod* method,
+  vtkRefractionPass* settings, bool cubeEnvironment, bool debug)
+{
+  std::ostringstream defines;
+  method->AppendDefines(defines, settings);
+  defines << "#define RF_MAX_MATERIALS " << MaximumMaterials << "\n";
+  if (settings->GetTIRPolicy() == vtkRefractionPass::TIR_CLAMP)
+  {
+    defines << "#define RF_TIR_CLAMP\n";
+  }
+  if (settings->GetFresnel())
+  {
+    defines << "#define RF_FRESNEL\n";
+  }
+  if (cubeEnvironment)
+  {
+    defines << "#define RF_ENV_CUBEMAP\n";
+  }
+  if (debug)
+  {
+    defines << "#define RF_DEBUG_OUTPUT\n";
+  }
+  std::string source = rfShadeFSSource;
+  vtkShaderProgram::Substitute(source, "in vec2 texCoord;", "in vec2 texCoord;\n" + defines.str());
+  vtkShaderProgram::Substitute(source, "//RF::Common", rfCommonSource);
+  vtkShaderProgram::Substitute(source, "//RF::Environment", rfEnvironmentSource);
+  vtkShaderProgram::Substitute(source, "//RF::Method", method->GetShaderSource());
+  return this->Build(ren, *this->GetProgram(debug), source);
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionShadeStage::Build(vtkOpenGLRenderer* ren, Program& program, const std::string& source)
+{
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  if (program.Quad && program.Source == source)
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(program.Quad->Program);
+  }
+  else
+  {
+    // A new define set: VTK's shader cache finds programs it built before by their source.
+    program.Quad.reset(new vtkOpenGLQuadHelper(renWin,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str(), ""));
+    program.Source = source;
+  }
+  if (!program.Quad->Program || !program.Quad->Program->GetCompiled())
+  {
+    vtkErrorMacro("Could not build the refraction shading program; the glass is not drawn.");
+    program.Quad.reset();
+    program.Source.clear();
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* method,
+  vtkRefractionPass* settings, vtkRefractionTargets* targets, const Frame& frame,
+  const std::vector<float>& materialIOR, bool debug)
+{
+  Program* program = this->GetProgram(debug);
+  if (!program->Quad)
+  {
+    return;
+  }
+  vtkShaderProgram* shader = program->Quad->Program;
+  static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())
+    ->GetShaderCache()
+    ->ReadyShaderProgram(shader);
+  vtkTextureObject* front = targets->Get(vtkRefractionTargets::FRONT_SURFACE);
+  std::vector<vtkTextureObject*> bound;
+  for (const TargetSampler& sampler : kSamplers)
+  {
+    vtkTextureObject* texture = targets->Get(sampler.Target);
+    if (texture && shader->IsUniformUsed(sampler.Name))
+    {
+      texture->Activate();
+      shader->SetUniformi(sampler.Name, texture->GetTextureUnit());
+      bound.push_back(texture);
+    }
+  }
+  const auto& levels = targets->GetReductionLevels();
+  if (!levels.empty() && shader->IsUniformUsed("rfDepthRangeTex"))
+  {
+    levels.back()->Activate();
+    shader->SetUniformi("rfDepthRangeTex", levels.back()->GetTextureUnit());
+    bound.push_back(levels.back());
+  }
+  vtkOpenGLTexture* cube = vtkOpenGLTexture::SafeDownCast(frame.EnvironmentCube);
+  if (cube && shader->IsUniformUsed("rfEnvironmentCube"))
+  {
+    cube->Render(ren);
+    shader->SetUniformi("rfEnvironmentCube", cube->GetTextureUnit());
+    shader->SetUniformMatrix3x3("rfEnvMatrix", const_cast<float*>(frame.EnvironmentMatrix));
+  }
+  std::vector<float> ior(materialIOR);
+  ior.resize(MaximumMaterials, ior.empty() ? 1.5f : ior.back());
+  shader->SetUniform1fv("rfMaterialIOR", MaximumMaterials, ior.data());
+  shader->SetUniformi("rfParallel", frame.Parallel ? 1 : 0);
+  shader->SetUniformMatrix("rfVCDC", frame.Projection);
+  shader->SetUniformMatrix("rfDCVC", frame.InverseProjection);
+  shader->SetUniformMatrix3x3("rfViewToWorld", const_cast<float*>(frame.ViewToWorld));
+  const float viewport[4] = { 0.f, 0.f, static_cast<float>(front->GetWidth()),
+    static_cast<float>(front->GetHeight()) };
+  shader->SetUniform4f("rfViewport", viewport);
+  method->SetUniforms(shader, settings, frame.BoundsDepthRange);
+
+  program->Quad->Render();
+
+  if (cube && shader->IsUniformUsed("rfEnvironmentCube"))
+  {
+    cube->PostRender(ren);
+  }
+  for (vtkTextureObject* texture : bound)
+  {
+    texture->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod* method,
+  vtkRefractionPass* settings, vtkRefractionTargets* targets, const Frame& frame,
+  const std::vector<float>& materialIOR)
+{
+  vtkOpenGLState* ostate = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+  // The glass is opaque: its colour replaces the scene's, its depth goes into the scene's
+  // depth buffer, and the depth test keeps the glass behind opaque actors hidden.
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_LEQUAL);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglDisable(GL_BLEND);
+  this->Draw(ren, method, settings, targets, frame, materialIOR, false);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> vtkRefractionShadeStage::RenderDebug(vtkOpenGLRenderer* ren,
+  vtkRefractionMethod* method, vtkRefractionPass* settings, vtkRefractionTargets* targets,
+  const Frame& frame, const std::vector<float>& materialIOR)
+{
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
+  vtkTextureObject* first = targets->Get(vtkRefractionTargets::DEBUG_0);
+  const int width = static_cast<int>(first->GetWidth());
+  const int height = static_cast<int>(first->GetHeight());
+  const vtkIdType count = static_cast<vtkIdType>(width) * height;
+  std::vector<float> pixels[2];
+  fbo->SaveCurrentBindingsAndBuffers();
+  fbo->Bind();
+  fbo->AddColorAttachment(0, first);
+  fbo->AddColorAttachment(1, targets->Get(vtkRefractionTargets::DEBUG_1));
+  fbo->RemoveDepthAttachment();
+  fbo->ActivateDrawBuffers(2);
+  {
+    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+    ostate->vtkglViewport(0, 0, width, height);
+    ostate->vtkglScissor(0, 0, width, height);
+    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    this->Draw(ren, method, settings, targets, frame, materialIOR, true);
+    for (int i = 0; i < 2; ++i)
+    {
+      pixels[i].resize(4 * count);
+      fbo->ActivateReadBuffer(i);
+      // Rows are whole floats: no row padding whatever GL_PACK_ALIGNMENT says.
+      glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, pixels[i].data());
+    }
+  }
+  fbo->RemoveColorAttachment(1);
+  fbo->UnBind();
+  fbo->RestorePreviousBindingsAndBuffers();
+
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  vtkNew<vtkFloatArray> p2;
+  vtkNew<vtkFloatArray> t2;
+  vtkNew<vtkFloatArray> thickness;
+  vtkNew<vtkFloatArray> flags;
+  p2->SetName("P2");
+  t2->SetName("T2");
+  thickness->SetName("Thickness");
+  flags->SetName("Flags");
+  p2->SetNumberOfComponents(3);
+  t2->SetNumberOfComponents(3);
+  p2->SetNumberOfTuples(count);
+  t2->SetNumberOfTuples(count);
+  thickness->SetNumberOfTuples(count);
+  flags->SetNumberOfTuples(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    const float* a = &pixels[0][4 * i];
+    const float* b = &pixels[1][4 * i];
+    p2->SetTypedTuple(i, a);
+    thickness->SetValue(i, a[3]);
+    t2->SetTypedTuple(i, b);
+    flags->SetValue(i, b[3]);
+  }
+  image->GetPointData()->AddArray(p2);
+  image->GetPointData()->AddArray(t2);
+  image->GetPointData()->AddArray(thickness);
+  image->GetPointData()->AddArray(flags);
+  return image;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionShadeStage::ReleaseGraphicsResources(vtkWindow* w)
+{
+  for (std::unique_ptr<Program>* program : { &this->Shade, &this->Debug })
+  {
+    if (*program && (*program)->Quad)
+    {
+      (*program)->Quad->ReleaseGraphicsResources(w);
+    }
+    program->reset();
+  }
+}

@@ -1,0 +1,88 @@
+/**
+ * @class   vtkRefractionShadeStage
+ * @brief   The refraction, once per pixel of the glass: a full-screen stage.
+ *
+ * Builds shaders/rfShadeFS.glsl with the method's defines and GLSL, binds the render targets
+ * the method reads (by sampler name), the environment and the camera, and draws a full-screen
+ * quad (vtkOpenGLQuadHelper) into the framebuffer bound now, writing the glass's colour and
+ * depth; or, for the debug output, P2/T2/thickness/flags into two float targets read back as
+ * a vtkImageData. GL state goes through vtkOpenGLState and is restored afterwards.
+ */
+#ifndef vtkRefractionShadeStage_h
+#define vtkRefractionShadeStage_h
+
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // For members
+
+#include <memory> // For members
+#include <string> // For members
+#include <vector> // For SetMaterials
+
+class vtkImageData;
+class vtkMatrix4x4;
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderer;
+class vtkRefractionMethod;
+class vtkRefractionPass;
+class vtkRefractionTargets;
+class vtkShaderProgram;
+class vtkTexture;
+class vtkWindow;
+
+class vtkRefractionShadeStage : public vtkObject
+{
+public:
+  static vtkRefractionShadeStage* New();
+  vtkTypeMacro(vtkRefractionShadeStage, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The most glass materials (props) one frame distinguishes; the rest share the last.
+  static constexpr int MaximumMaterials = 64;
+
+  /// The camera and environment of this frame (GL layouts, as vtkRefractionPass computes them).
+  struct Frame
+  {
+    vtkMatrix4x4* Projection = nullptr;
+    vtkMatrix4x4* InverseProjection = nullptr;
+    const float* ViewToWorld = nullptr;       // 3x3
+    const float* EnvironmentMatrix = nullptr; // 3x3
+    bool Parallel = false;
+    vtkTexture* EnvironmentCube = nullptr;    // nullptr: the built-in environment
+    const double* BoundsDepthRange = nullptr;
+  };
+
+  /// The shading program for the method and the pass's settings; false when it does not build.
+  bool Prepare(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, vtkRefractionPass* settings,
+    bool cubeEnvironment, bool debug);
+
+  /// Shades the glass into the framebuffer bound now (the renderer's viewport).
+  void Render(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, vtkRefractionPass* settings,
+    vtkRefractionTargets* targets, const Frame& frame, const std::vector<float>& materialIOR);
+
+  /// Renders the debug output into DEBUG_0/DEBUG_1 and returns it as an image.
+  vtkSmartPointer<vtkImageData> RenderDebug(vtkOpenGLRenderer* ren, vtkRefractionMethod* method,
+    vtkRefractionPass* settings, vtkRefractionTargets* targets, const Frame& frame,
+    const std::vector<float>& materialIOR);
+
+  void ReleaseGraphicsResources(vtkWindow* w);
+
+protected:
+  vtkRefractionShadeStage();
+  ~vtkRefractionShadeStage() override;
+
+private:
+  vtkRefractionShadeStage(const vtkRefractionShadeStage&) = delete;
+  void operator=(const vtkRefractionShadeStage&) = delete;
+
+  struct Program;
+  Program* GetProgram(bool debug);
+  bool Build(vtkOpenGLRenderer* ren, Program& program, const std::string& source);
+  void Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, vtkRefractionPass* settings,
+    vtkRefractionTargets* targets, const Frame& frame, const std::vector<float>& materialIOR,
+    bool debug);
+
+  std::unique_ptr<Program> Shade;
+  std::unique_ptr<Program> Debug;
+};
+
+#endif

@@ -1,0 +1,86 @@
+/**
+ * @class   vtkRefractionTargets
+ * @brief   The off-screen render targets of vtkRefractionPass, allocated per method.
+ *
+ * One holder owns every texture the pass renders into and the framebuffer object it binds
+ * them to. The pass asks each frame for the set of targets its method needs; the others are
+ * released, so what a method costs in memory is what it uses. Bytes are counted from the
+ * sizes the driver reports for each allocated texture (glGetTexLevelParameteriv), not from
+ * the formats asked for.
+ */
+#ifndef vtkRefractionTargets_h
+#define vtkRefractionTargets_h
+
+#include "vtkObject.h"
+#include "vtkSmartPointer.h" // For members
+
+#include <vector> // For members
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkRefractionTargets : public vtkObject
+{
+public:
+  static vtkRefractionTargets* New();
+  vtkTypeMacro(vtkRefractionTargets, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum TargetType
+  {
+    FRONT_SURFACE = 0, ///< RGBA32F: octahedral view-space normal (2), -z_view, material + 1
+    FRONT_DEPTH,       ///< DEPTH32F: the glass's nearest surface, written to the screen's depth
+    FRONT_AUX,         ///< R32F: ISR's d_N at the front surface (view-space units; < 0: none)
+    BACK_NORMAL,       ///< RGBA32F, filtered: outward view-space normal of the back surface
+    BACK_DEPTH,        ///< R32F: -z_view of the back surface, 0 where there is none
+    BACK_Z,            ///< DEPTH32F: the depth test of the back capture
+    SCENE_COLOR,       ///< RGBA8: the opaque scene and SSP's refraction mask in alpha
+    DEBUG_0,           ///< RGBA32F: P2 and |P2 - P1|
+    DEBUG_1,           ///< RGBA32F: T2 and the flags
+    TARGET_COUNT
+  };
+  static const char* GetTargetName(int target);
+
+  /**
+   * Allocate exactly the targets flagged in `wanted` (indexed by TargetType) at width x
+   * height, and the min/max reduction chain when `reduction` is set; release all others.
+   * Targets that exist at the right size are kept.
+   */
+  void Update(vtkOpenGLRenderWindow* renWin, int width, int height,
+    const std::vector<bool>& wanted, bool reduction);
+
+  /// The target, or nullptr when it is not allocated.
+  vtkTextureObject* Get(int target) const;
+  /// The reduction chain, halving down to 1x1 (RG32F: min, max); empty when not allocated.
+  const std::vector<vtkSmartPointer<vtkTextureObject>>& GetReductionLevels() const
+  {
+    return this->ReductionLevels;
+  }
+  vtkOpenGLFramebufferObject* GetFramebuffer() const;
+
+  /// Bytes of all allocated targets, as the driver reports their formats.
+  unsigned long long GetBytes() const;
+
+  void ReleaseGraphicsResources(vtkWindow* w);
+
+protected:
+  vtkRefractionTargets();
+  ~vtkRefractionTargets() override;
+
+private:
+  vtkRefractionTargets(const vtkRefractionTargets&) = delete;
+  void operator=(const vtkRefractionTargets&) = delete;
+
+  void Allocate(vtkOpenGLRenderWindow* renWin, int target);
+  vtkSmartPointer<vtkTextureObject> Targets[TARGET_COUNT];
+  unsigned long long TargetBytes[TARGET_COUNT] = {};
+  std::vector<vtkSmartPointer<vtkTextureObject>> ReductionLevels;
+  unsigned long long ReductionBytes = 0;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
+  int Width = 0;
+  int Height = 0;
+};
+
+#endif

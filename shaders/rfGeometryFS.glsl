@@ -1,0 +1,99 @@
+// The glass's geometry stage, drawn by VTK's own mappers: the glass G-buffer. Injected into
+// VTK's polydata fragment shader through its tags by vtkRefractionGeometryStage: the part
+// before the RF::Impl marker after VTK's Output::Dec tag, the part after it after VTK's
+// Coincident::Impl tag (the end of main). Nothing else runs per fragment: VTK's lighting is
+// left out (the refraction replaces the colour) and the refraction itself runs once per pixel
+// in the shading stage (rfShadeFS.glsl). One program serves the three stages (rfGeometryStage
+// selects), so switching stages costs no shader rebuild.
+//  1 front: octahedral view-space normal facing the viewer, -z_view, material index + 1 (a
+//    cleared texel, 0, is no glass); with RF_GBUFFER_NORMAL_DISTANCE, ISR's d_N in target 1.
+//  2 back: DIR pass 1 (Oliveira & Brauwers 2007, section 3.1): outward normal and -z_view of
+//    the back surface. Drawn with GL_GREATER and depth cleared to 0, so the furthest surface
+//    wins whatever the mesh's winding; empty texels keep 0, which is what the search tests
+//    against. With RF_BACK_NEAREST (beyond the paper) the nearest back-facing surface is kept
+//    (GL_LESS, front faces discarded by winding, flipped for meshes wound inward): on shapes
+//    of several parts it is the surface the refracted ray leaves through far more often.
+//  3 mask: SSP's refraction mask (Sousa, GPU Gems 2 ch. 19, listing 19-2), blended into the
+//    framebuffer's alpha.
+// Defined by the stage: RF_POSITION_VC and RF_NORMAL_VC (the mapper's view-space position and
+// normal, or what stands in for them).
+uniform int rfGeometryStage;
+uniform int rfWindingSign;
+uniform float rfMaterial;
+uniform int rfParallel;
+uniform mat4 rfDCVC;
+uniform vec4 rfViewport;
+#ifdef RF_GBUFFER_NORMAL_DISTANCE
+in float rfNormalDistanceVSOut;
+uniform int rfHaveNormalDistance;
+uniform float rfModelScale;
+#endif
+
+//RF::Common
+
+// The unit shading normal; where it is unusable the face normal from the position's
+// derivatives, else the direction toward the eye. Unusable: zero, tiny or not finite (VTK has
+// normalized it already, so a zero normal arrives as NaN), or turning by more than 1.5 rad
+// across the pixel's 2x2 quad. The last catches vertex normals that cancel inside a triangle
+// (zero-length normals in the data): there the interpolated vector is rounding noise (the
+// attribute planes round each component on their own) and its direction is arbitrary (a turn
+// of ~2.8 on average), while a genuine shading normal turns by a few degrees per pixel (the
+// metaball isosurface, the steepest of the regression scenes, stays below the threshold).
+// One NaN normal would also spread through the filtered back-normal texture to neighbours.
+// Call in uniform control flow (derivatives).
+vec3 rfSafeNormal(vec3 n, vec3 p)
+{
+  vec3 face = cross(dFdx(p), dFdy(p));
+  float n2 = dot(n, n);
+  float turn = length(dFdx(n)) + length(dFdy(n));
+  if (n2 > 1e-24 && n2 < 1e30 && turn < 1.5)
+  {
+    return n * inversesqrt(n2);
+  }
+  float f2 = dot(face, face);
+  if (f2 > 1e-36 && f2 < 1e30)
+  {
+    return face * inversesqrt(f2);
+  }
+  vec3 v = rfViewDirection(p);
+  return dot(v, v) > 0.0 ? -v : vec3(0.0, 0.0, 1.0);
+}
+
+// The fragment's view-space position from gl_FragCoord, for mappers that declare no vertexVC.
+vec3 rfReconstructPositionVC()
+{
+  vec2 ndc = (gl_FragCoord.xy - rfViewport.xy) / rfViewport.zw * 2.0 - 1.0;
+  vec4 p = rfDCVC * vec4(ndc, gl_FragCoord.z * 2.0 - 1.0, 1.0);
+  return p.xyz / p.w;
+}
+
+//RF::Impl
+  {
+    vec3 rfP = RF_POSITION_VC;
+    vec3 rfN = rfSafeNormal(RF_NORMAL_VC, rfP);
+    vec3 rfV = rfViewDirection(rfP);
+    if (rfGeometryStage == 3)
+    {
+      gl_FragData[0] = vec4(0.0, 0.0, 0.0, 0.5); // blended to 0.25 + 0.5 alpha
+    }
+    else if (rfGeometryStage == 2)
+    {
+#ifdef RF_BACK_NEAREST
+      if (gl_FrontFacing == (rfWindingSign > 0))
+      {
+        discard;
+      }
+#endif
+      gl_FragData[0] = vec4(dot(rfN, rfV) < 0.0 ? -rfN : rfN, 1.0);
+      gl_FragData[1] = vec4(-rfP.z, 0.0, 0.0, 1.0);
+    }
+    else
+    {
+      gl_FragData[0] = vec4(rf_oct_encode(dot(rfN, rfV) > 0.0 ? -rfN : rfN), -rfP.z, rfMaterial);
+#ifdef RF_GBUFFER_NORMAL_DISTANCE
+      // d_N is measured in model coordinates: scaled with the actor; -1 marks "none".
+      gl_FragData[1] = vec4(
+        rfHaveNormalDistance == 1 ? rfNormalDistanceVSOut * rfModelScale : -1.0, 0.0, 0.0, 1.0);
+#endif
+    }
+  }

@@ -1,0 +1,97 @@
+// Each method allocates exactly the render targets it reads, and the pass's byte count
+// (GetTextureBytes, what the benchmark's memory column reports) is what the driver allocated.
+// The expected bytes per pixel are written out here from the targets' formats (see
+// vtkRefractionTargets.h): front G-buffer RGBA32F + DEPTH32F = 20; back capture RGBA32F normal
+// + R32F depth + DEPTH32F = 24; ISR's d_N R32F = 4; SSP's scene copy RGBA8 = 4; DIR's
+// reduction chain RG32F = 8 per texel of each halved level; the debug output 2 x RGBA32F.
+#include "vtkRefractionPass.h"
+
+#include "rf_require.h"
+
+#include <vtkActor.h>
+#include <vtkNew.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSphereSource.h>
+
+#include <cstdio>
+
+namespace
+{
+unsigned long long ReductionTexels(int width, int height)
+{
+  unsigned long long texels = 0;
+  do
+  {
+    width = (width + 1) / 2;
+    height = (height + 1) / 2;
+    texels += static_cast<unsigned long long>(width) * height;
+  } while (width > 1 || height > 1);
+  return texels;
+}
+}
+
+int main()
+{
+  // A non-power-of-two, non-square window: the reduction chain's rounding is part of the sum.
+  const int width = 150;
+  const int height = 97;
+  const unsigned long long pixels = static_cast<unsigned long long>(width) * height;
+  vtkNew<vtkSphereSource> sphere;
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  vtkNew<vtkRefractionPass> pass;
+  renderer->SetPass(pass);
+  RF_REQUIRE(vtkRefractionPass::MakeGlass(actor, 1.5), "MakeGlass refused IOR 1.5");
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(width, height);
+  window->SetMultiSamples(0);
+  window->SetOffScreenRendering(1);
+  window->AddRenderer(renderer);
+
+  struct Case
+  {
+    int Method;
+    int DepthRange;
+    bool Debug;
+    const char* Name;
+    unsigned long long Expected;
+  };
+  const unsigned long long front = 20 * pixels;
+  const unsigned long long back = 24 * pixels;
+  const unsigned long long reduction = 8 * ReductionTexels(width, height);
+  const Case cases[] = {
+    { vtkRefractionPass::SIR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "SIR", front },
+    { vtkRefractionPass::DIR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "DIR",
+      front + back + reduction },
+    { vtkRefractionPass::DIR, vtkRefractionPass::DEPTH_RANGE_BOUNDS, false, "DIR, bounds",
+      front + back },
+    { vtkRefractionPass::ISR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "ISR",
+      front + back + 4 * pixels },
+    { vtkRefractionPass::SSP, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "SSP",
+      front + 4 * pixels },
+    { vtkRefractionPass::DIR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, true, "DIR, debug",
+      front + back + reduction + 32 * pixels },
+    // Back to the cheapest: what SIR no longer needs is released.
+    { vtkRefractionPass::SIR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "SIR again", front },
+  };
+  for (const Case& c : cases)
+  {
+    pass->SetMethod(c.Method);
+    pass->SetDepthRangeMode(c.DepthRange);
+    pass->SetDebugOutput(c.Debug);
+    window->Render();
+    const unsigned long long bytes = pass->GetTextureBytes();
+    std::printf("%-12s %10llu bytes (%.2f per pixel), expected %llu\n", c.Name, bytes,
+      static_cast<double>(bytes) / pixels, c.Expected);
+    RF_REQUIRE(pass->GetNumberOfGlassProps() == 1, "%s: the sphere was not drawn as glass", c.Name);
+    RF_REQUIRE(bytes == c.Expected, "%s: %llu bytes allocated, %llu expected", c.Name, bytes,
+      c.Expected);
+  }
+  return EXIT_SUCCESS;
+}

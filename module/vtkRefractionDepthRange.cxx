@@ -63,7 +63,7 @@ bool vtkRefractionDepthRange::Reduce(vtkOpenGLRenderWindow* renWin, vtkRefractio
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglDisable(GL_DEPTH_TEST);
     fbo->RemoveDepthAttachment();
-    vtkTextureObject* source = targets->Get(vtkRefractionTargets::BACK_DEPTH);
+    vtkTextureObject* source = targets->Get(vtkRefractionTargets::BACK_SURFACE);
     const auto& levels = targets->GetReductionLevels();
     for (size_t level = 0; level < levels.size(); ++level)
     {

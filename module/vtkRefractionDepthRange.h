@@ -28,7 +28,7 @@ public:
   vtkTypeMacro(vtkRefractionDepthRange, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// Reduces BACK_DEPTH into the targets' reduction chain. Returns false on a shader error.
+  /// Reduces the depths of BACK_SURFACE into the targets' reduction chain. Returns false on a shader error.
   bool Reduce(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets);
 
   /// The depth range (positive distances) of the props' bounding boxes, clipped to the near

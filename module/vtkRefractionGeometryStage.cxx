@@ -2,6 +2,7 @@
 
 #include "vtkActor.h"
 #include "vtkCellArray.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -21,6 +22,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <sstream>
 
@@ -85,9 +87,9 @@ void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
     this->Defines = defines.str();
     this->DefinesTime.Modified();
   }
-  if (this->WindingCache.size() > 4 * glass.size() + 16)
+  if (this->Surfaces.size() > 4 * glass.size() + 16)
   {
-    this->WindingCache.clear(); // entries of polydata that went away
+    this->Surfaces.clear(); // entries of polydata that went away
   }
   if (normalDistance)
   {
@@ -109,15 +111,22 @@ void vtkRefractionGeometryStage::DrawProps(vtkOpenGLRenderer* ren, int stage)
 {
   vtkRenderState state(ren);
   state.SetPropArrayAndCount(this->Glass.data(), static_cast<int>(this->Glass.size()));
+  vtkOpenGLState* ostate = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(ostate, GL_CULL_FACE);
+  GLint cullMode = GL_BACK;
+  glGetIntegerv(GL_CULL_FACE_MODE, &cullMode);
   this->PreRender(&state);
   this->Stage = stage;
+  this->State = ostate;
   this->NumberOfRenderedProps = 0;
   for (vtkProp* prop : this->Glass)
   {
     this->NumberOfRenderedProps += prop->RenderOpaqueGeometry(ren);
   }
+  this->State = nullptr;
   this->Stage = STAGE_NONE;
   this->PostRender(&state);
+  ostate->vtkglCullFace(static_cast<unsigned int>(cullMode));
 }
 
 //------------------------------------------------------------------------------
@@ -187,8 +196,8 @@ void vtkRefractionGeometryStage::DrawFront(vtkOpenGLRenderer* ren, vtkRefraction
 //------------------------------------------------------------------------------
 void vtkRefractionGeometryStage::DrawBack(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets)
 {
-  this->DrawIntoTargets(ren, targets, vtkRefractionTargets::BACK_NORMAL,
-    vtkRefractionTargets::BACK_DEPTH, vtkRefractionTargets::BACK_Z, this->BackNearest ? 1.0 : 0.0,
+  this->DrawIntoTargets(ren, targets, vtkRefractionTargets::BACK_SURFACE, -1,
+    vtkRefractionTargets::BACK_Z, this->BackNearest ? 1.0 : 0.0,
     this->BackNearest ? GL_LESS : GL_GREATER, STAGE_BACK);
 }
 
@@ -311,8 +320,9 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
   }
   if (program->IsUniformUsed("rfWindingSign"))
   {
-    program->SetUniformi("rfWindingSign", this->GetWindingSign(prop));
+    program->SetUniformi("rfWindingSign", this->GetSurface(prop).WindingSign);
   }
+  this->CullHiddenFaces(prop);
   if (program->IsUniformUsed("rfHaveNormalDistance"))
   {
     vtkActor* actor = vtkActor::SafeDownCast(prop);
@@ -340,20 +350,23 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
 }
 
 //------------------------------------------------------------------------------
-int vtkRefractionGeometryStage::GetWindingSign(vtkProp* prop)
+const vtkRefractionGeometryStage::Surface& vtkRefractionGeometryStage::GetSurface(vtkProp* prop)
 {
+  static const Surface unknown;
   vtkActor* actor = vtkActor::SafeDownCast(prop);
   vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
   vtkPolyData* poly = mapper ? vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
   if (!poly)
   {
-    return 1;
+    return unknown;
   }
-  auto cached = this->WindingCache.find(poly);
-  if (cached != this->WindingCache.end() && cached->second.first == poly->GetMTime())
+  auto cached = this->Surfaces.find(poly);
+  if (cached != this->Surfaces.end() && cached->second.Time == poly->GetMTime())
   {
-    return cached->second.second;
+    return cached->second;
   }
+  Surface& surface = this->Surfaces[poly];
+  surface.Time = poly->GetMTime();
   // The signed volume of a closed mesh is positive when its polygons wind counter-clockwise
   // seen from outside (the OpenGL front face). Measured about the bounds' centre so that far
   // offset coordinates keep their precision.
@@ -362,6 +375,19 @@ int vtkRefractionGeometryStage::GetWindingSign(vtkProp* prop)
   const double centre[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
     0.5 * (bounds[4] + bounds[5]) };
   double volume = 0.0;
+  // Closed and consistently oriented: every directed edge a->b has its partner b->a, so a sum
+  // of an antisymmetric function of the edges' ends vanishes. With pseudo-random 64-bit
+  // values per point, wrapping arithmetic, a boundary edge leaves it non-zero (but for a
+  // chance of 2^-64); a mesh wound inconsistently counts as open. One pass, no edge table:
+  // re-contoured data is checked every time step.
+  auto hash = [](vtkIdType id, std::uint64_t salt) {
+    std::uint64_t x = static_cast<std::uint64_t>(id) * 0x9E3779B97F4A7C15ULL + salt;
+    x ^= x >> 31;
+    x *= 0xBF58476D1CE4E5B9ULL;
+    x ^= x >> 29;
+    return x;
+  };
+  std::uint64_t edgeSum = 0;
   vtkCellArray* polys = poly->GetPolys();
   vtkIdType count = 0;
   const vtkIdType* ids = nullptr;
@@ -370,6 +396,12 @@ int vtkRefractionGeometryStage::GetWindingSign(vtkProp* prop)
   double c[3];
   for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
   {
+    for (vtkIdType j = 0; j < count; ++j)
+    {
+      const vtkIdType from = ids[j];
+      const vtkIdType to = ids[(j + 1) % count];
+      edgeSum += hash(from, 1) * hash(to, 2) - hash(to, 1) * hash(from, 2);
+    }
     if (count < 3)
     {
       continue;
@@ -392,9 +424,44 @@ int vtkRefractionGeometryStage::GetWindingSign(vtkProp* prop)
         a[2] * (b[0] * c[1] - b[1] * c[0]);
     }
   }
-  const int sign = volume < 0.0 ? -1 : 1;
-  this->WindingCache[poly] = std::make_pair(poly->GetMTime(), sign);
-  return sign;
+  surface.WindingSign = volume < 0.0 ? -1 : 1;
+  surface.Closed = edgeSum == 0 && poly->GetNumberOfStrips() == 0 && polys->GetNumberOfCells() > 0;
+  return surface;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionGeometryStage::CullHiddenFaces(vtkProp* prop)
+{
+  // vtkOpenGLProperty::Render has just set the actor's own culling; this runs after it, just
+  // before the draw. On a closed mesh the nearest surface always faces the camera and the
+  // furthest faces away, so the other faces need neither rasterizing nor shading (about half
+  // the fragments of each stage). Open meshes keep both: their back side can be the nearest.
+  const Surface& surface = this->GetSurface(prop);
+  if (!this->State || !surface.Closed ||
+    (this->Stage != STAGE_FRONT && this->Stage != STAGE_BACK))
+  {
+    return;
+  }
+  // A mirroring actor matrix turns the winding seen on screen.
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  double mirror = 1.0;
+  if (actor)
+  {
+    double m[3][3];
+    vtkMatrix4x4* matrix = actor->GetMatrix();
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        m[r][c] = matrix->GetElement(r, c);
+      }
+    }
+    mirror = vtkMath::Determinant3x3(m);
+  }
+  const bool outwardIsFront = (surface.WindingSign > 0) == (mirror >= 0.0);
+  const bool cullFront = (this->Stage == STAGE_BACK) == outwardIsFront;
+  this->State->vtkglEnable(GL_CULL_FACE);
+  this->State->vtkglCullFace(cullFront ? GL_FRONT : GL_BACK);
 }
 
 //------------------------------------------------------------------------------

@@ -23,6 +23,7 @@
 class vtkMapper;
 class vtkMatrix4x4;
 class vtkOpenGLRenderer;
+class vtkOpenGLState;
 class vtkPolyData;
 class vtkProp;
 class vtkRefractionTargets;
@@ -52,7 +53,7 @@ public:
 
   /// The front G-buffer (FRONT_SURFACE, FRONT_AUX when configured, FRONT_DEPTH).
   void DrawFront(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets);
-  /// The back capture (BACK_NORMAL, BACK_DEPTH, BACK_Z).
+  /// The back capture (BACK_SURFACE, BACK_Z).
   void DrawBack(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets);
   /// SSP's refraction mask into the alpha of the framebuffer bound now.
   void DrawMask(vtkOpenGLRenderer* ren);
@@ -80,12 +81,22 @@ private:
   void DrawIntoTargets(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int colour0,
     int colour1, int depth, double clearDepth, unsigned int depthFunc, int stage);
   void DrawProps(vtkOpenGLRenderer* ren, int stage);
-  int GetWindingSign(vtkProp* prop);
+  /// Orientation of a prop's polygons: +1 counter-clockwise seen from outside (the OpenGL
+  /// front face), -1 inward; `closed` when every edge has a partner of opposite direction.
+  struct Surface
+  {
+    vtkMTimeType Time = 0;
+    int WindingSign = 1;
+    bool Closed = false;
+  };
+  const Surface& GetSurface(vtkProp* prop);
+  void CullHiddenFaces(vtkProp* prop);
   void MapNormalDistance(vtkProp* prop);
 
   std::vector<vtkProp*> Glass;
   std::map<vtkProp*, int> MaterialIndex;
-  std::map<vtkPolyData*, std::pair<vtkMTimeType, int>> WindingCache;
+  std::map<vtkPolyData*, Surface> Surfaces;
+  vtkOpenGLState* State = nullptr;
   std::vector<vtkWeakPointer<vtkMapper>> NormalDistanceMappers;
   bool NormalDistance = false;
   bool BackNearest = false;

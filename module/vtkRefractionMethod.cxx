@@ -44,8 +44,7 @@ void vtkRefractionMethod::AddTargets(std::vector<bool>& wanted, vtkRefractionPas
   }
   if (this->NeedsBackSurface())
   {
-    wanted[vtkRefractionTargets::BACK_NORMAL] = true;
-    wanted[vtkRefractionTargets::BACK_DEPTH] = true;
+    wanted[vtkRefractionTargets::BACK_SURFACE] = true;
     wanted[vtkRefractionTargets::BACK_Z] = true;
   }
   if (this->NeedsSceneColor())

@@ -44,8 +44,7 @@ const TargetSampler kSamplers[] = {
   { vtkRefractionTargets::FRONT_SURFACE, "rfFrontSurface" },
   { vtkRefractionTargets::FRONT_DEPTH, "rfFrontDepth" },
   { vtkRefractionTargets::FRONT_AUX, "rfFrontAux" },
-  { vtkRefractionTargets::BACK_NORMAL, "rfBackNormal" },
-  { vtkRefractionTargets::BACK_DEPTH, "rfBackDepth" },
+  { vtkRefractionTargets::BACK_SURFACE, "rfBackSurface" },
   { vtkRefractionTargets::SCENE_COLOR, "rfSceneColor" },
 };
 }

@@ -25,11 +25,11 @@ const TargetFormat kFormats[vtkRefractionTargets::TARGET_COUNT] = {
   { "front depth", 0, 0, 0, vtkTextureObject::Nearest },
   { "front d_N", 1, GL_R32F, GL_RED, vtkTextureObject::Nearest },
   // Back normals are filtered (the paper: filtering reduces noise; empty texels are zero
-  // vectors, which only shorten a filtered normal); depths never are. 32-bit floats: on the
-  // 256 px sphere DIR (5 steps) gave 37.9 dB against the two-interface reference with half
-  // floats, 38.1 dB with floats.
-  { "back normal", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Linear },
-  { "back depth", 1, GL_R32F, GL_RED, vtkTextureObject::Nearest },
+  // vectors, which only shorten a filtered normal); the depth beside them in alpha is read
+  // unfiltered (texelFetch). One target instead of two: the back capture writes one output.
+  // 32-bit floats: on the 256 px sphere DIR (5 steps) gave 37.9 dB against the two-interface
+  // reference with half floats, 38.1 dB with floats.
+  { "back surface", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Linear },
   { "back z-buffer", 0, 0, 0, vtkTextureObject::Nearest },
   { "scene colour", 4, GL_RGBA8, GL_RGBA, vtkTextureObject::Nearest },
   { "debug P2", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },

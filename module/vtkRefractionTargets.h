@@ -33,8 +33,8 @@ public:
     FRONT_SURFACE = 0, ///< RGBA32F: octahedral view-space normal (2), -z_view, material + 1
     FRONT_DEPTH,       ///< DEPTH32F: the glass's nearest surface, written to the screen's depth
     FRONT_AUX,         ///< R32F: ISR's d_N at the front surface (view-space units; < 0: none)
-    BACK_NORMAL,       ///< RGBA32F, filtered: outward view-space normal of the back surface
-    BACK_DEPTH,        ///< R32F: -z_view of the back surface, 0 where there is none
+    BACK_SURFACE,      ///< RGBA32F, filtered: outward view-space normal of the back surface
+                       ///< and its -z_view in alpha, 0 where there is none
     BACK_Z,            ///< DEPTH32F: the depth test of the back capture
     SCENE_COLOR,       ///< RGBA8: the opaque scene and SSP's refraction mask in alpha
     DEBUG_0,           ///< RGBA32F: P2 and |P2 - P1|

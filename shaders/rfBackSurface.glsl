@@ -1,15 +1,26 @@
-// The captured back surface (DIR pass 1), shared by DIR and ISR.
-uniform sampler2D rfBackNormal;
-uniform sampler2D rfBackDepth;
+// The captured back surface (DIR pass 1), shared by DIR and ISR: outward normal in rgb
+// (filtered), -z_view in alpha (read unfiltered), 0 where there is none.
+uniform sampler2D rfBackSurface;
+
+// The stored back depth at a texture coordinate; 0 outside the image or the silhouette.
+float rfStoredDepth(vec2 tc)
+{
+  if (any(lessThan(tc, vec2(0.0))) || any(greaterThan(tc, vec2(1.0))))
+  {
+    return 0.0;
+  }
+  // texelFetch: the depths are never filtered, and an unfiltered fetch is the cheapest one.
+  return texelFetch(rfBackSurface, ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0)), 0).a;
+}
 
 // The exit normal at a texel of the back capture; the entry pixel's own back texel (always
 // covered) stands in when the texel is empty. Returns false without a usable normal.
 bool rfBackNormalAt(vec2 tc, vec3 P1, out vec3 N2)
 {
-  vec4 n = textureLod(rfBackNormal, tc, 0.0);
+  vec4 n = textureLod(rfBackSurface, tc, 0.0);
   if (!(n.a > 0.0))
   {
-    n = textureLod(rfBackNormal, rfProjectToTexture(P1), 0.0);
+    n = textureLod(rfBackSurface, rfProjectToTexture(P1), 0.0);
   }
   N2 = n.xyz;
   return n.a > 0.0 && dot(n.xyz, n.xyz) > 0.0;

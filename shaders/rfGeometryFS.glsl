@@ -7,8 +7,8 @@
 // selects), so switching stages costs no shader rebuild.
 //  1 front: octahedral view-space normal facing the viewer, -z_view, material index + 1 (a
 //    cleared texel, 0, is no glass); with RF_GBUFFER_NORMAL_DISTANCE, ISR's d_N in target 1.
-//  2 back: DIR pass 1 (Oliveira & Brauwers 2007, section 3.1): outward normal and -z_view of
-//    the back surface. Drawn with GL_GREATER and depth cleared to 0, so the furthest surface
+//  2 back: DIR pass 1 (Oliveira & Brauwers 2007, section 3.1): outward normal and (in alpha)
+//    -z_view of the back surface. Drawn with GL_GREATER and depth cleared to 0, so the furthest surface
 //    wins whatever the mesh's winding; empty texels keep 0, which is what the search tests
 //    against. With RF_BACK_NEAREST (beyond the paper) the nearest back-facing surface is kept
 //    (GL_LESS, front faces discarded by winding, flipped for meshes wound inward): on shapes
@@ -84,8 +84,7 @@ vec3 rfReconstructPositionVC()
         discard;
       }
 #endif
-      gl_FragData[0] = vec4(dot(rfN, rfV) < 0.0 ? -rfN : rfN, 1.0);
-      gl_FragData[1] = vec4(-rfP.z, 0.0, 0.0, 1.0);
+      gl_FragData[0] = vec4(dot(rfN, rfV) < 0.0 ? -rfN : rfN, -rfP.z);
     }
     else
     {

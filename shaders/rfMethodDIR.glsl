@@ -25,16 +25,6 @@ vec2 rfDepthRange()
 #endif
 }
 
-float rfStoredDepth(vec2 tc)
-{
-  if (any(lessThan(tc, vec2(0.0))) || any(greaterThan(tc, vec2(1.0))))
-  {
-    return 0.0;
-  }
-  // texelFetch: the depths are never filtered, and an unfiltered fetch is the cheapest one.
-  return texelFetch(rfBackDepth, ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0)), 0).r;
-}
-
 // Conservative binary search (algorithm 2) of T1 against the captured back depths; twin of
 // rf_dir_cbs. The search starts at the entry point when it lies beyond Zmin (the part of the
 // segment before P1 cannot hold the exit), which also keeps the start texel valid.

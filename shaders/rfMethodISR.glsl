@@ -7,7 +7,7 @@ uniform sampler2D rfFrontAux;
 // along the view ray to the captured back depth, d_N per vertex along the inward normal.
 float rfISRDistance(vec3 P1, vec3 V, vec3 N1, vec3 T1, float eta)
 {
-  float backDepth = textureLod(rfBackDepth, rfProjectToTexture(P1), 0.0).r;
+  float backDepth = rfStoredDepth(rfProjectToTexture(P1));
   float dV = backDepth > 0.0 ? max(backDepth + P1.z, 0.0) / max(-V.z, 1e-6) : 0.0;
   float thetaI = acos(clamp(-dot(V, N1), -1.0, 1.0));
   float thetaT = acos(clamp(-dot(T1, N1), -1.0, 1.0));

@@ -1,7 +1,7 @@
 //VTK::System::Dec
 // DIR pass 2 (section 3.2): min/max of the valid back-surface depths by halving passes.
-// R = nearest valid depth, G = furthest; the first level reads the R32F depth capture where
-// 0 marks an empty texel, the later levels read the RG32F output of the previous level.
+// R = nearest valid depth, G = furthest; the first level reads the back capture's depth (its
+// alpha channel), where 0 marks an empty texel, the later levels read the RG32F output of the previous level.
 // An all-empty block gives R = 3e38, G = 0, so a range with R > G means "no back surface".
 in vec2 texCoord;
 uniform sampler2D rfSource;
@@ -21,10 +21,10 @@ void main()
       vec4 v = texelFetch(rfSource, min(base + ivec2(i, j), rfSourceSize - 1), 0);
       if (rfFirstLevel == 1)
       {
-        if (v.r > 0.0)
+        if (v.a > 0.0)
         {
-          nearest = min(nearest, v.r);
-          furthest = max(furthest, v.r);
+          nearest = min(nearest, v.a);
+          furthest = max(furthest, v.a);
         }
       }
       else

@@ -36,6 +36,8 @@ public:
   virtual bool NeedsDepthRange() const { return false; }
   /// The opaque scene's colour and the refraction mask (SSP).
   virtual bool NeedsSceneColor() const { return false; }
+  /// Whether the ray leaving the glass may be followed through the captured opaque scene.
+  virtual bool SupportsSceneRefraction() const { return true; }
   /// ISR's d_N in the G-buffer.
   virtual bool NeedsNormalDistance() const { return false; }
 

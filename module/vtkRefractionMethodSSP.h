@@ -19,6 +19,7 @@ public:
 
   const char* GetName() const override { return "SSP"; }
   bool NeedsSceneColor() const override { return true; }
+  bool SupportsSceneRefraction() const override { return false; }
   std::string GetShaderSource() const override;
   void SetUniforms(vtkShaderProgram* program, vtkRefractionPass* settings,
     const double boundsDepthRange[2]) const override;

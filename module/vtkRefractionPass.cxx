@@ -290,7 +290,7 @@ void vtkRefractionPass::Render(const vtkRenderState* s)
   othersState.SetPropArrayAndCount(others.data(), static_cast<int>(others.size()));
   this->DelegatePass->Render(&othersState);
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
-  this->RenderGlass(s, glass);
+  this->RenderGlass(s, glass, !others.empty());
 }
 
 //------------------------------------------------------------------------------
@@ -311,12 +311,13 @@ int vtkRefractionPass::RenderOpaqueAndGlass(const vtkRenderState* s, vtkRenderPa
   othersState.SetPropArrayAndCount(others.data(), static_cast<int>(others.size()));
   opaque->Render(&othersState);
   this->NumberOfRenderedProps = opaque->GetNumberOfRenderedProps();
-  this->RenderGlass(s, glass);
+  this->RenderGlass(s, glass, !others.empty());
   return this->NumberOfRenderedProps;
 }
 
 //------------------------------------------------------------------------------
-void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp*>& glass)
+void vtkRefractionPass::RenderGlass(
+  const vtkRenderState* s, std::vector<vtkProp*>& glass, bool opaqueScene)
 {
   this->NumberOfGlassProps = static_cast<int>(glass.size());
   if (glass.empty())
@@ -355,8 +356,17 @@ void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp
   vtkRefractionMethod* method = this->MethodObject;
   const bool reduction =
     method->NeedsDepthRange() && this->DepthRangeMode == DEPTH_RANGE_REDUCTION;
+  // The scene behind the glass is captured only where it can show: opaque props drawn, a
+  // method that follows rays through it.
+  const bool sceneRefraction =
+    this->SceneRefraction && opaqueScene && method->SupportsSceneRefraction();
   std::vector<bool> wanted;
   method->AddTargets(wanted, this);
+  if (sceneRefraction)
+  {
+    wanted[vtkRefractionTargets::SCENE_COLOR] = true;
+    wanted[vtkRefractionTargets::SCENE_DEPTH] = true;
+  }
   wanted[vtkRefractionTargets::DEBUG_0] = this->DebugOutput;
   wanted[vtkRefractionTargets::DEBUG_1] = this->DebugOutput;
   this->Targets->Update(renWin, this->Width, this->Height, wanted, reduction);
@@ -369,8 +379,19 @@ void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp
   frame.EnvironmentMatrix = this->EnvironmentMatrix;
   frame.Parallel = this->Parallel;
   frame.EnvironmentCube = cube;
+  frame.EnvironmentBackground = this->EnvironmentMode == ENVIRONMENT_RENDERER && !cube;
+  ren->GetBackground(frame.Background);
+  if (ren->GetGradientBackground())
+  {
+    ren->GetBackground2(frame.Background2);
+  }
+  else
+  {
+    ren->GetBackground(frame.Background2);
+  }
+  frame.SceneRefraction = sceneRefraction;
   frame.BoundsDepthRange = this->BoundsDepthRange;
-  if (!this->ShadeStage->Prepare(ren, method, this, cube != nullptr, false))
+  if (!this->ShadeStage->Prepare(ren, method, this, frame, false))
   {
     return;
   }
@@ -400,6 +421,10 @@ void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp
       this->Timers[stage].reset();
     }
   }
+  if (sceneRefraction)
+  {
+    this->CaptureScene(ren, true); // before any glass is drawn into the framebuffer
+  }
   if (method->NeedsBackSurface())
   {
     this->StartTimer(TIMED_BACK_CAPTURE);
@@ -424,7 +449,7 @@ void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp
   if (method->NeedsSceneColor())
   {
     this->GeometryStage->DrawMask(ren);
-    this->CopySceneColor(ren);
+    this->CaptureScene(ren, false);
   }
   this->StopTimer(TIMED_FRONT);
   this->NumberOfRenderedProps += this->GeometryStage->GetNumberOfDrawnProps();
@@ -432,7 +457,7 @@ void vtkRefractionPass::RenderGlass(const vtkRenderState* s, std::vector<vtkProp
   this->StartTimer(TIMED_SHADE);
   this->ShadeStage->Render(ren, method, this, this->Targets, frame, materialIOR);
   this->StopTimer(TIMED_SHADE);
-  if (this->DebugOutput && this->ShadeStage->Prepare(ren, method, this, cube != nullptr, true))
+  if (this->DebugOutput && this->ShadeStage->Prepare(ren, method, this, frame, true))
   {
     this->DebugImage =
       this->ShadeStage->RenderDebug(ren, method, this, this->Targets, frame, materialIOR);
@@ -457,11 +482,19 @@ vtkTexture* vtkRefractionPass::GetCubeEnvironment(vtkOpenGLRenderer* ren)
 }
 
 //------------------------------------------------------------------------------
-void vtkRefractionPass::CopySceneColor(vtkOpenGLRenderer* ren)
+void vtkRefractionPass::CaptureScene(vtkOpenGLRenderer* ren, bool depth)
 {
-  // The viewport of the scene (colour and SSP's mask) into the texture the glass samples.
+  // The viewport of the scene drawn so far (colour, with SSP's mask in alpha) into the
+  // texture the glass samples; its depth copied as VTK's depth peeling copies the opaque
+  // depth (any depth format converts).
   vtkOpenGLState* ostate = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
   vtkOpenGLFramebufferObject* fbo = this->Targets->GetFramebuffer();
+  if (depth)
+  {
+    this->Targets->Get(vtkRefractionTargets::SCENE_DEPTH)
+      ->CopyFromFrameBuffer(this->ViewportOrigin[0], this->ViewportOrigin[1], 0, 0, this->Width,
+        this->Height);
+  }
   fbo->SaveCurrentBindingsAndBuffers();
   fbo->Bind(GL_DRAW_FRAMEBUFFER);
   fbo->AddColorAttachment(0, this->Targets->Get(vtkRefractionTargets::SCENE_COLOR));

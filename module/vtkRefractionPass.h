@@ -195,6 +195,38 @@ public:
   vtkGetMacro(TIRPolicy, int);
   ///@}
 
+  /**
+   * What the glass shows where its rays leave toward the surroundings. Always the renderer's
+   * environment texture when it is a cube map (a lat-long image through
+   * vtkEquirectangularToCubeMapTexture, vtkRefractionImageIO::ReadEnvironment), honouring
+   * EnvironmentUp and EnvironmentRight. Without one: ENVIRONMENT_RENDERER (default) the
+   * renderer's background, solid or gradient (the colour the screen shows in that direction),
+   * so glass of IOR 1 is invisible; ENVIRONMENT_BUILTIN the built-in sky and checkered ground
+   * (rf_builtin_environment), a named option for tests, benchmarks and demos.
+   */
+  enum EnvironmentType
+  {
+    ENVIRONMENT_RENDERER = 0,
+    ENVIRONMENT_BUILTIN = 1
+  };
+  vtkSetClampMacro(EnvironmentMode, int, ENVIRONMENT_RENDERER, ENVIRONMENT_BUILTIN);
+  vtkGetMacro(EnvironmentMode, int);
+  void SetEnvironmentModeToRenderer() { this->SetEnvironmentMode(ENVIRONMENT_RENDERER); }
+  void SetEnvironmentModeToBuiltin() { this->SetEnvironmentMode(ENVIRONMENT_BUILTIN); }
+
+  ///@{
+  /**
+   * Refract the opaque scene behind the glass (on by default; nearby geometry, Wyman 2005):
+   * the colour and depth of everything drawn before the glass are captured and the ray
+   * leaving the glass is followed through them; where it meets nothing it takes the
+   * environment. Off, or with no opaque prop in the renderer, nothing is captured. SIR, DIR
+   * and ISR; SSP perturbs the captured scene in its own way.
+   */
+  vtkSetMacro(SceneRefraction, bool);
+  vtkGetMacro(SceneRefraction, bool);
+  vtkBooleanMacro(SceneRefraction, bool);
+  ///@}
+
   ///@{
   /// Blend reflection and refraction with the exact dielectric Fresnel term (on by default).
   vtkSetMacro(Fresnel, bool);
@@ -254,10 +286,10 @@ protected:
 
   friend class vtkRefractionOpaqueStep;
   int RenderOpaqueAndGlass(const vtkRenderState* s, vtkRenderPass* opaque);
-  void RenderGlass(const vtkRenderState* s, std::vector<vtkProp*>& glass);
+  void RenderGlass(const vtkRenderState* s, std::vector<vtkProp*>& glass, bool opaqueScene);
+  void CaptureScene(vtkOpenGLRenderer* ren, bool depth);
   void UpdateCamera(vtkOpenGLRenderer* ren);
   vtkTexture* GetCubeEnvironment(vtkOpenGLRenderer* ren);
-  void CopySceneColor(vtkOpenGLRenderer* ren);
   void StartTimer(int stage);
   void StopTimer(int stage);
 
@@ -279,6 +311,8 @@ protected:
   double ChromaticAberration = 0.0;
   bool SSPRefractionMask = true;
   bool GPUTiming = false;
+  int EnvironmentMode = ENVIRONMENT_BUILTIN;
+  bool SceneRefraction = true;
   int NumberOfGlassProps = 0;
 
   vtkNew<vtkRefractionGlassChecker> GlassChecker;

@@ -46,6 +46,7 @@ const TargetSampler kSamplers[] = {
   { vtkRefractionTargets::FRONT_AUX, "rfFrontAux" },
   { vtkRefractionTargets::BACK_SURFACE, "rfBackSurface" },
   { vtkRefractionTargets::SCENE_COLOR, "rfSceneColor" },
+  { vtkRefractionTargets::SCENE_DEPTH, "rfSceneDepth" },
 };
 }
 
@@ -74,7 +75,7 @@ vtkRefractionShadeStage::Program* vtkRefractionShadeStage::GetProgram(bool debug
 
 //------------------------------------------------------------------------------
 bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMethod* method,
-  vtkRefractionPass* settings, bool cubeEnvironment, bool debug)
+  vtkRefractionPass* settings, const Frame& frame, bool debug)
 {
   std::ostringstream defines;
   method->AppendDefines(defines, settings);
@@ -87,9 +88,17 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
   {
     defines << "#define RF_FRESNEL\n";
   }
-  if (cubeEnvironment)
+  if (frame.EnvironmentCube)
   {
     defines << "#define RF_ENV_CUBEMAP\n";
+  }
+  else if (frame.EnvironmentBackground)
+  {
+    defines << "#define RF_ENV_BACKGROUND\n";
+  }
+  if (frame.SceneRefraction)
+  {
+    defines << "#define RF_SCENE_REFRACTION\n#define RF_SCENE_STEPS 24\n";
   }
   if (debug)
   {
@@ -167,6 +176,15 @@ void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* 
     cube->Render(ren);
     shader->SetUniformi("rfEnvironmentCube", cube->GetTextureUnit());
     shader->SetUniformMatrix3x3("rfEnvMatrix", const_cast<float*>(frame.EnvironmentMatrix));
+  }
+  if (frame.EnvironmentBackground && shader->IsUniformUsed("rfBackground"))
+  {
+    const float bottom[3] = { static_cast<float>(frame.Background[0]),
+      static_cast<float>(frame.Background[1]), static_cast<float>(frame.Background[2]) };
+    const float top[3] = { static_cast<float>(frame.Background2[0]),
+      static_cast<float>(frame.Background2[1]), static_cast<float>(frame.Background2[2]) };
+    shader->SetUniform3f("rfBackground", bottom);
+    shader->SetUniform3f("rfBackground2", top);
   }
   std::vector<float> ior(materialIOR);
   ior.resize(MaximumMaterials, ior.empty() ? 1.5f : ior.back());

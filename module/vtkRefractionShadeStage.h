@@ -47,13 +47,17 @@ public:
     const float* ViewToWorld = nullptr;       // 3x3
     const float* EnvironmentMatrix = nullptr; // 3x3
     bool Parallel = false;
-    vtkTexture* EnvironmentCube = nullptr;    // nullptr: the built-in environment
+    vtkTexture* EnvironmentCube = nullptr;    // the renderer's cube map, or nullptr
+    bool EnvironmentBackground = false;       // the renderer's background (no cube map)
+    bool SceneRefraction = false;             // the captured scene is followed
+    double Background[3] = { 0.0, 0.0, 0.0 };
+    double Background2[3] = { 0.0, 0.0, 0.0 }; // = Background when it is not a gradient
     const double* BoundsDepthRange = nullptr;
   };
 
   /// The shading program for the method and the pass's settings; false when it does not build.
   bool Prepare(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, vtkRefractionPass* settings,
-    bool cubeEnvironment, bool debug);
+    const Frame& frame, bool debug);
 
   /// Shades the glass into the framebuffer bound now (the renderer's viewport).
   void Render(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, vtkRefractionPass* settings,

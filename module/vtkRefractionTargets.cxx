@@ -32,6 +32,7 @@ const TargetFormat kFormats[vtkRefractionTargets::TARGET_COUNT] = {
   { "back surface", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Linear },
   { "back z-buffer", 0, 0, 0, vtkTextureObject::Nearest },
   { "scene colour", 4, GL_RGBA8, GL_RGBA, vtkTextureObject::Nearest },
+  { "scene depth", 0, 0, 0, vtkTextureObject::Nearest },
   { "debug P2", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "debug T2", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
 };

@@ -36,7 +36,8 @@ public:
     BACK_SURFACE,      ///< RGBA32F, filtered: outward view-space normal of the back surface
                        ///< and its -z_view in alpha, 0 where there is none
     BACK_Z,            ///< DEPTH32F: the depth test of the back capture
-    SCENE_COLOR,       ///< RGBA8: the opaque scene and SSP's refraction mask in alpha
+    SCENE_COLOR,       ///< RGBA8: the opaque scene (and SSP's refraction mask in alpha)
+    SCENE_DEPTH,       ///< DEPTH32F: the opaque scene's depth (window coordinates)
     DEBUG_0,           ///< RGBA32F: P2 and |P2 - P1|
     DEBUG_1,           ///< RGBA32F: T2 and the flags
     TARGET_COUNT

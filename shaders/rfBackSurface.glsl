@@ -31,7 +31,7 @@ float rfFresnelWeight(float cosIncident, float etaIn)
   return rf_fresnel_dielectric(cosIncident, etaIn);
 }
 
-vec3 rfTransmittedColour(vec2 own, vec3 N1, vec3 T1, vec3 T2)
+vec3 rfTransmittedColour(vec2 own, vec3 N1, vec3 T1, vec3 P2, vec3 T2)
 {
-  return rfEnvironment(T2);
+  return rfBehind(P2, T2);
 }

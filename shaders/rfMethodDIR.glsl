@@ -28,29 +28,6 @@ vec2 rfDepthRange()
 // Conservative binary search (algorithm 2) of T1 against the captured back depths; twin of
 // rf_dir_cbs. The search starts at the entry point when it lies beyond Zmin (the part of the
 // segment before P1 cannot hold the exit), which also keeps the start texel valid.
-// The largest t >= 0 for which P + t T stays inside the frustum's side and near planes
-// (clip space -w <= x, y <= w and -w <= z): the part of the ray the depth map can answer for.
-float rfFrustumExit(vec3 P, vec3 T)
-{
-  vec4 c0 = rfVCDC * vec4(P, 1.0);
-  vec4 c1 = rfVCDC * vec4(T, 0.0);
-  vec4 a0 = vec4(c0.w - c0.x, c0.w + c0.x, c0.w - c0.y, c0.w + c0.y);
-  vec4 a1 = vec4(c1.w - c1.x, c1.w + c1.x, c1.w - c1.y, c1.w + c1.y);
-  float t = 1e30;
-  for (int i = 0; i < 4; ++i)
-  {
-    if (a1[i] < 0.0)
-    {
-      t = min(t, max(a0[i], 0.0) / -a1[i]);
-    }
-  }
-  if (c1.w + c1.z < 0.0)
-  {
-    t = min(t, max(c0.w + c0.z, 0.0) / -(c1.w + c1.z));
-  }
-  return t;
-}
-
 bool rf_dir_cbs(vec3 P1, vec3 T1, vec2 depthRange, out vec3 P2, out vec2 tc)
 {
   P2 = P1;
@@ -64,7 +41,7 @@ bool rf_dir_cbs(vec3 P1, vec3 T1, vec2 depthRange, out vec3 P2, out vec2 tc)
   // clipped where the ray leaves the frustum, and a ray parallel to the image plane (or
   // turned toward the eye) is searched sideways from P1 at its own depth: the same segment
   // the clipped eq. 3-4 tend to, so nothing jumps at the threshold.
-  float tFar = rfFrustumExit(P1, T1);
+  float tFar = rfFrustumExit(P1, T1, false);
   float tS = 0.0;
   float tE = tFar;
   if (T1.z < -1e-6)

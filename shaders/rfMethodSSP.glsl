@@ -38,7 +38,7 @@ float rfFresnelWeight(float cosIncident, float etaIn)
   return rfSSPFresnel(cosIncident);
 }
 
-vec3 rfTransmittedColour(vec2 own, vec3 N1, vec3 T1, vec3 T2)
+vec3 rfTransmittedColour(vec2 own, vec3 N1, vec3 T1, vec3 P2, vec3 T2)
 {
   vec2 offset = N1.xy * rfSSPStrength;
   return vec3(rfSSPScene(own, own + offset * (1.0 + rfChromaticAberration), T1).r,

@@ -5,7 +5,8 @@
 // rfMethod<NAME>.glsl) and refracts again into the environment. Writes the glass's colour and
 // its depth, so the opaque scene's depth test keeps hidden glass hidden.
 // Defines set by the pass: RF_METHOD_{SIR,DIR,ISR,SSP}, RF_TIR_CLAMP, RF_FRESNEL,
-// RF_ENV_CUBEMAP, RF_MAX_MATERIALS, RF_DEBUG_OUTPUT and the method's own.
+// RF_ENV_CUBEMAP or RF_ENV_BACKGROUND (else the built-in environment), RF_SCENE_REFRACTION,
+// RF_SCENE_STEPS, RF_MAX_MATERIALS, RF_DEBUG_OUTPUT and the method's own.
 in vec2 texCoord;
 uniform sampler2D rfFrontSurface;
 uniform sampler2D rfFrontDepth;
@@ -19,6 +20,10 @@ uniform mat3 rfViewToWorld;
 uniform samplerCube rfEnvironmentCube;
 uniform mat3 rfEnvMatrix;
 #endif
+#ifdef RF_ENV_BACKGROUND
+uniform vec3 rfBackground;
+uniform vec3 rfBackground2;
+#endif
 // The pixel being shaded, in the targets' texels.
 ivec2 rfPixel;
 
@@ -26,13 +31,20 @@ ivec2 rfPixel;
 
 //RF::Environment
 
+// The environment along a view-space direction: the renderer's cube map, or its background
+// (the colour the screen shows in that direction: VTK's gradient runs from Background at the
+// bottom of the viewport to Background2 at the top), or the built-in sky and ground.
 vec3 rfEnvironment(vec3 directionVC)
 {
-  vec3 w = rfViewToWorld * directionVC;
-#ifdef RF_ENV_CUBEMAP
-  return texture(rfEnvironmentCube, rfEnvMatrix * w).rgb;
+#if defined(RF_ENV_CUBEMAP)
+  return texture(rfEnvironmentCube, rfEnvMatrix * (rfViewToWorld * directionVC)).rgb;
+#elif defined(RF_ENV_BACKGROUND)
+  vec4 c = rfVCDC * vec4(directionVC, 0.0);
+  float up = c.w > 1e-6 * length(directionVC) ? 0.5 + 0.5 * c.y / c.w
+    : (directionVC.y >= 0.0 ? 1.0 : 0.0);
+  return mix(rfBackground, rfBackground2, clamp(up, 0.0, 1.0));
 #else
-  return rfBuiltinEnvironment(w);
+  return rfBuiltinEnvironment(rfViewToWorld * directionVC);
 #endif
 }
 
@@ -108,6 +120,123 @@ int rfRefractWithPolicy(vec3 incident, vec3 normal, float eta, out vec3 transmit
   return 0;
 }
 
+// The largest t >= 0 for which P + t T stays inside the frustum's side and near planes
+// (clip space -w <= x, y <= w and -w <= z), and with `withFar` inside its far plane too
+// (z <= w): the part of the ray the captured depth maps can answer for.
+float rfFrustumExit(vec3 P, vec3 T, bool withFar)
+{
+  vec4 c0 = rfVCDC * vec4(P, 1.0);
+  vec4 c1 = rfVCDC * vec4(T, 0.0);
+  vec4 a0 = vec4(c0.w - c0.x, c0.w + c0.x, c0.w - c0.y, c0.w + c0.y);
+  vec4 a1 = vec4(c1.w - c1.x, c1.w + c1.x, c1.w - c1.y, c1.w + c1.y);
+  float t = 1e30;
+  for (int i = 0; i < 4; ++i)
+  {
+    if (a1[i] < 0.0)
+    {
+      t = min(t, max(a0[i], 0.0) / -a1[i]);
+    }
+  }
+  if (c1.w + c1.z < 0.0)
+  {
+    t = min(t, max(c0.w + c0.z, 0.0) / -(c1.w + c1.z));
+  }
+  if (withFar && c1.w - c1.z < 0.0)
+  {
+    t = min(t, max(c0.w - c0.z, 0.0) / -(c1.w - c1.z));
+  }
+  return t;
+}
+
+#ifdef RF_SCENE_REFRACTION
+uniform sampler2D rfSceneColor;
+uniform sampler2D rfSceneDepth;
+
+// The view-space distance -z of the scene at a texel of the captured depth (window depth).
+float rfSceneDistance(vec2 tc, out bool background)
+{
+  float windowDepth = texelFetch(rfSceneDepth, ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0)), 0).r;
+  background = windowDepth >= 1.0;
+  vec4 p = rfDCVC * vec4(tc * 2.0 - 1.0, windowDepth * 2.0 - 1.0, 1.0);
+  return -p.z / p.w;
+}
+
+// Nearby opaque geometry (Wyman 2005, seed 001, section 4): where the ray leaving the glass,
+// P + t T, first passes behind the opaque scene captured before the glass, its colour there.
+// The ray is marched in RF_SCENE_STEPS equal steps up to where it leaves the frustum, and a
+// crossing (in front at one step, behind at the next) is bisected; a crossing with a depth
+// gap larger than the step's (the ray passing behind a silhouette) is not a hit. Scene points
+// in front of the start (an opaque actor in front of the glass) are never hits: the ray must
+// come from in front of the scene point. False: the ray leaves the image or meets only the
+// background, and the environment stands in.
+bool rfSceneAlong(vec3 P, vec3 T, out vec3 colour)
+{
+  colour = vec3(0.0);
+  float tEnd = rfFrustumExit(P, T, true);
+  if (!(tEnd > 0.0) || !(tEnd < 1e29))
+  {
+    return false;
+  }
+  float dt = tEnd / float(RF_SCENE_STEPS);
+  bool wasInFront = false;
+  bool background;
+  for (int i = 0; i <= RF_SCENE_STEPS; ++i)
+  {
+    vec3 Q = P + (float(i) * dt) * T;
+    vec2 tc = rfProjectToTexture(Q);
+    if (any(lessThan(tc, vec2(0.0))) || any(greaterThan(tc, vec2(1.0))))
+    {
+      return false;
+    }
+    float scene = rfSceneDistance(tc, background);
+    bool inFront = background || -Q.z < scene;
+    if (wasInFront && !inFront)
+    {
+      float lo = float(i - 1) * dt;
+      float hi = float(i) * dt;
+      for (int j = 0; j < 6; ++j)
+      {
+        float mid = 0.5 * (lo + hi);
+        vec3 M = P + mid * T;
+        float sceneMid = rfSceneDistance(rfProjectToTexture(M), background);
+        if (background || -M.z < sceneMid)
+        {
+          lo = mid;
+        }
+        else
+        {
+          hi = mid;
+        }
+      }
+      vec3 H = P + hi * T;
+      vec2 hitTC = rfProjectToTexture(H);
+      float sceneHit = rfSceneDistance(hitTC, background);
+      if (!background && -H.z - sceneHit <= abs(dt * T.z) + 1e-4 * sceneHit)
+      {
+        colour = textureLod(rfSceneColor, hitTC, 0.0).rgb;
+        return true;
+      }
+    }
+    wasInFront = inFront;
+  }
+  return false;
+}
+#endif
+
+// What the glass shows along the ray P + t T leaving it: the opaque scene where the ray meets
+// it, else the environment.
+vec3 rfBehind(vec3 P, vec3 T)
+{
+#ifdef RF_SCENE_REFRACTION
+  vec3 scene;
+  if (rfSceneAlong(P, T, scene))
+  {
+    return scene;
+  }
+#endif
+  return rfEnvironment(T);
+}
+
 //RF::Method
 
 //VTK::Output::Dec
@@ -148,7 +277,7 @@ void main()
   float rfF = 0.0;
 #endif
   vec3 rfColour = rfF * rfEnvironment(reflect(rfV, rfN1)) +
-    (1.0 - rfF) * rfTransmittedColour(texCoord, rfN1, rfT1, rfT2);
+    (1.0 - rfF) * rfTransmittedColour(texCoord, rfN1, rfT1, rfP2, rfT2);
   gl_FragData[0] = vec4(rfColour, 1.0);
 #endif
 }

@@ -1175,7 +1175,8 @@ bool vtkRefractionPass::PostReplaceShaderValues(std::string& vertexShader, std::
   const size_t marker = source.find(kImplMarker);
   std::string declarations = source.substr(0, marker);
   const std::string refractionBody = source.substr(marker + std::string(kImplMarker).size());
-  vtkShaderProgram::Substitute(declarations, kEnvironmentMarker, rfEnvironmentSource);
+  vtkShaderProgram::Substitute(
+    declarations, kEnvironmentMarker, std::string(rfKernelSource) + rfEnvironmentSource);
 
   // The mapper declares vertexVC only with lighting, and normalVCVSOutput only with normals
   // or lighting; otherwise rebuild them from the fragment's coordinates.

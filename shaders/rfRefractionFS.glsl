@@ -1,7 +1,11 @@
 // Shade the front surface: DIR pass 3 (Oliveira & Brauwers 2007, sections 3.2-3.3), SIR,
 // ISR (Wyman 2005, eq. 1-2) and SSP (Sousa, GPU Gems 2 ch. 19).
 // Injected into VTK's polydata fragment shader by vtkRefractionPass. The part before the
-// RF::Impl marker goes before main(), the part after it at the end of main().
+// RF::Impl marker goes before main(), the part after it at the end of main(). The formulas
+// (Snell, Fresnel, the DIR search, ISR's estimate, the built-in environment) are the kernel's
+// (rfKernelSource, inserted with rfEnvironment.glsl at the environment marker; entry points in
+// shaders/rfKernelPrelude.glsl): the same source the C core compiles. This file keeps what is
+// this stage's own: its uniforms, the safe normal (derivatives), the position reconstruction.
 // Defines set by the pass: RF_METHOD_{SIR,DIR,ISR,SSP}, RF_TIR_CLAMP, RF_FRESNEL,
 // RF_ENV_CUBEMAP, RF_DEPTH_RANGE_BOUNDS, RF_ADAPTIVE_SEARCH, RF_SECANT_REFINE,
 // RF_MAX_SEARCH_STEPS; RF_POSITION_VC and RF_NORMAL_VC name the
@@ -86,84 +90,27 @@ vec3 rfReconstructPositionVC()
   return p.xyz / p.w;
 }
 
-vec3 rfEnvironment(vec3 directionVC)
-{
-  vec3 w = rfViewToWorld * directionVC;
-#ifdef RF_ENV_CUBEMAP
-  return texture(rfEnvironmentCube, rfEnvMatrix * w).rgb;
+#ifdef RF_TIR_CLAMP
+#define RF_TIR_POLICY RF_TIR_POLICY_CLAMP
 #else
-  return rfBuiltinEnvironment(w);
+#define RF_TIR_POLICY RF_TIR_POLICY_REFLECT
 #endif
-}
 
-// Exact unpolarized dielectric Fresnel reflectance; twin of rf_fresnel_dielectric (rf_optics.c).
-// eta = n_incident / n_transmitted.
-float rf_fresnel_dielectric(float cosIncident, float eta)
-{
-  // Equal indices are no interface: nothing is reflected, even at grazing incidence where
-  // 1 - (1 - c^2) rounds to 0 and the formula below would report TIR.
-  if (eta == 1.0)
-  {
-    return 0.0;
-  }
-  float c = clamp(cosIncident, 0.0, 1.0);
-  float sin2t = eta * eta * (1.0 - c * c);
-  if (sin2t >= 1.0)
-  {
-    return 1.0;
-  }
-  float cost = sqrt(1.0 - sin2t);
-  float rs = (eta * c - cost) / (eta * c + cost);
-  float rp = (c - eta * cost) / (c + eta * cost);
-  return 0.5 * (rs * rs + rp * rp);
-}
-
-// Snell's law with the TIR policy of the build; twins of rf_refract_clamped (the paper's
-// section 5: clamp to the critical angle, the ray leaves tangent to the surface) and
-// rf_refract (follow TIR by one reflection). Returns 1 when TIR occurred.
+// Snell's law with the TIR policy of the build (rfk_refract). Returns 1 when TIR occurred.
 int rfRefractWithPolicy(vec3 incident, vec3 normal, float eta, out vec3 transmitted)
 {
-  // IOR = 1: the ray goes straight on, exactly (Snell's formula only up to rounding).
-  if (eta == 1.0)
-  {
-    transmitted = incident;
-    return 0;
-  }
-  if (dot(incident, normal) > 0.0)
-  {
-    normal = -normal;
-  }
-  float cosI = -dot(incident, normal);
-  // The tangential part of the incident direction (sin(theta_i) long). Refracting as
-  // eta tangent - sqrt(k) N instead of refract()'s eta I + (eta cosI - sqrt(k)) N avoids the
-  // cancellation of eta I against eta cosI N, which at eta = 1000 (IOR 1000 at the exit)
-  // leaves 6% rounding noise in a float's tangential part; twin of rf_refract.
-  vec3 tangent = incident + cosI * normal;
-  float k = 1.0 - eta * eta * dot(tangent, tangent);
-  if (k < 0.0)
-  {
-#ifdef RF_TIR_CLAMP
-    float lt = length(tangent);
-    transmitted = lt > 0.0 ? tangent / lt : incident;
-#else
-    transmitted = incident + 2.0 * cosI * normal;
-#endif
-    return 1;
-  }
-  transmitted = normalize(eta * tangent - sqrt(k) * normal);
-  return 0;
+  return rfk_refract(incident, normal, eta, RF_TIR_POLICY, transmitted);
+}
+
+// What the kernel's search needs of this stage's camera and depth map.
+rfk_camera rfCamera()
+{
+  return rfk_make_camera(rfVCDC, rfViewport.zw, rfParallel == 1);
 }
 
 vec2 rfProjectToTexture(vec3 p)
 {
-  vec4 c = rfVCDC * vec4(p, 1.0);
-  return (c.xy / c.w) * 0.5 + 0.5;
-}
-
-// eq. 9: texture-space parameter of the point of depth z on the segment S-E; twin of rf_dir_alpha.
-float rf_dir_alpha(float k1, float k2, float z)
-{
-  return (1.0 / z - k1) * k2;
+  return rfk_project_to_texture(rfCamera(), p);
 }
 
 #if defined(RF_METHOD_DIR) || defined(RF_METHOD_ISR)
@@ -182,18 +129,14 @@ bool rfBackNormalAt(vec2 tc, vec3 P1, out vec3 N2)
 #endif
 
 #ifdef RF_METHOD_ISR
-// Wyman's estimate (eq. 1-2): d = (theta_t/theta_i) d_V + (1 - theta_t/theta_i) d_N, d_V
-// along the view ray to the captured back depth, d_N per vertex along the inward normal.
+// Wyman's estimate (eq. 1-2, rfk_isr_distance) with this stage's inputs: d_V from the back
+// capture at the entry pixel, d_N per vertex (d_V without it).
 float rfISRDistance(vec3 P1, vec3 V, vec3 N1, vec3 T1, float eta)
 {
   float backDepth = textureLod(rfBackDepth, rfProjectToTexture(P1), 0.0).r;
-  float dV = backDepth > 0.0 ? max(backDepth + P1.z, 0.0) / max(-V.z, 1e-6) : 0.0;
-  float thetaI = acos(clamp(-dot(V, N1), -1.0, 1.0));
-  float thetaT = acos(clamp(-dot(T1, N1), -1.0, 1.0));
-  // At normal incidence theta_t/theta_i tends to sin(theta_t)/sin(theta_i) = eta.
-  float ratio = thetaI > 1e-4 ? thetaT / thetaI : eta;
+  float dV = rfk_isr_view_distance(backDepth, P1, V);
   float dN = rfHaveNormalDistance == 1 ? rfNormalDistanceVSOut * rfModelScale : dV;
-  return ratio * dV + (1.0 - ratio) * dN;
+  return rfk_isr_distance(dV, dN, V, N1, T1, eta);
 }
 #endif
 
@@ -227,144 +170,19 @@ vec2 rfDepthRange()
 #endif
 }
 
-float rfStoredDepth(vec2 tc)
+rfk_search_settings rfSearchSettings()
 {
-  if (any(lessThan(tc, vec2(0.0))) || any(greaterThan(tc, vec2(1.0))))
-  {
-    return 0.0;
-  }
-  // texelFetch: the depths are never filtered, and an unfiltered fetch is the cheapest one.
-  return texelFetch(rfBackDepth, ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0)), 0).r;
-}
-
-// Conservative binary search (algorithm 2) of T1 against the captured back depths; twin of
-// rf_dir_cbs. The search starts at the entry point when it lies beyond Zmin (the part of the
-// segment before P1 cannot hold the exit), which also keeps the start texel valid.
-// The largest t >= 0 for which P + t T stays inside the frustum's side and near planes
-// (clip space -w <= x, y <= w and -w <= z): the part of the ray the depth map can answer for.
-float rfFrustumExit(vec3 P, vec3 T)
-{
-  vec4 c0 = rfVCDC * vec4(P, 1.0);
-  vec4 c1 = rfVCDC * vec4(T, 0.0);
-  vec4 a0 = vec4(c0.w - c0.x, c0.w + c0.x, c0.w - c0.y, c0.w + c0.y);
-  vec4 a1 = vec4(c1.w - c1.x, c1.w + c1.x, c1.w - c1.y, c1.w + c1.y);
-  float t = 1e30;
-  for (int i = 0; i < 4; ++i)
-  {
-    if (a1[i] < 0.0)
-    {
-      t = min(t, max(a0[i], 0.0) / -a1[i]);
-    }
-  }
-  if (c1.w + c1.z < 0.0)
-  {
-    t = min(t, max(c0.w + c0.z, 0.0) / -(c1.w + c1.z));
-  }
-  return t;
-}
-
-bool rf_dir_cbs(vec3 P1, vec3 T1, vec2 depthRange, out vec3 P2, out vec2 tc)
-{
-  P2 = P1;
-  tc = rfProjectToTexture(P1);
-  if (!(depthRange.x <= depthRange.y))
-  {
-    return false; // no back surface captured
-  }
-  // The segment as parameters along the unit T1. Eq. 3-4 put S and E on the planes Zmin and
-  // Zmax; as T1.z -> 0 they go to infinity (and k2 of eq. 9 loses its meaning), so E is
-  // clipped where the ray leaves the frustum, and a ray parallel to the image plane (or
-  // turned toward the eye) is searched sideways from P1 at its own depth: the same segment
-  // the clipped eq. 3-4 tend to, so nothing jumps at the threshold.
-  float tFar = rfFrustumExit(P1, T1);
-  float tS = 0.0;
-  float tE = tFar;
-  if (T1.z < -1e-6)
-  {
-    tS = max((-depthRange.x - P1.z) / T1.z, 0.0); // eq. 3; from P1 when P1 lies beyond Zmin
-    tE = min((-depthRange.y - P1.z) / T1.z, tFar); // eq. 4
-  }
-  if (!(tE < 1e20))
-  {
-    return true; // no frustum plane ahead (rounding): the exit behind the entry point
-  }
-  // S must lie on the glass's back-surface footprint for the search to start there: where it
-  // does not (outside the silhouette or the image) start from P1, which always does.
-  vec3 S = P1 + tS * T1;
-  if (tS > 0.0 && !(tS < tE && rfStoredDepth(rfProjectToTexture(S)) > 0.0))
-  {
-    tS = 0.0;
-    S = P1;
-  }
-  // Zmin = Zmax (a flat back facing the camera, a single back texel), or P1 at or beyond Zmax:
-  // the segment is (nearly) a point and S.z - E.z in k2 (eq. 9) tends to 0. The exit is S;
-  // below a relative length of 1e-6 the search could not move it in float anyway.
-  if (!(tE - tS > 1e-6 * length(S)))
-  {
-    P2 = S;
-    tc = rfProjectToTexture(S);
-    return true;
-  }
-  vec3 E = P1 + tE * T1;
-  // Eq. 9 maps depth to the texture parameter; when the segment's depths (nearly) agree the
-  // projection along it is affine and the parameter is the step fraction itself (also under a
-  // parallel projection).
-  bool rfAffine = rfParallel == 1 || S.z - E.z < 1e-4 * abs(S.z);
-  float k1 = 1.0 / S.z;                                   // eq. 9
-  float k2 = rfAffine ? 0.0 : S.z * E.z / (S.z - E.z);
-  float beta = 0.0;
-  float dbeta = 1.0;
-  vec2 ts = rfProjectToTexture(S);
-  vec2 dt = rfProjectToTexture(E) - ts;
-  vec3 dv = E - S;
-  P2 = S;
-  int steps = rfSearchSteps;
 #ifdef RF_ADAPTIVE_SEARCH
-  // No more halvings than it takes to bring the bracket under half a texel of the segment's
-  // projection (a coarser bracket picks the neighbouring texel's normal).
-  float texels = length(dt * rfViewport.zw);
-  steps = min(steps, int(ceil(log2(max(2.0 * texels, 1.0)))));
+  bool adaptive = true;
+#else
+  bool adaptive = false;
 #endif
-  // A loop bound known only at run time: with a constant bound (and a break) llvmpipe unrolls
-  // all RF_MAX_SEARCH_STEPS iterations and pays for every texture fetch whatever the steps.
-  steps = min(steps, RF_MAX_SEARCH_STEPS);
-  for (int i = 0; i < steps; ++i)
-  {
-    dv *= 0.5;
-    dbeta *= 0.5;
-    float z = P2.z + dv.z;
-    float alpha = rfAffine ? beta + dbeta : rf_dir_alpha(k1, k2, z);
-    if (-z < rfStoredDepth(ts + alpha * dt)) // eq. 10; empty texels hold 0 and stop the advance
-    {
-      P2 += dv;
-      beta += dbeta;
-    }
-  }
-  tc = rfProjectToTexture(P2);
 #ifdef RF_SECANT_REFINE
-  // Beyond the paper: one secant step inside the final bracket [P2, P2 + dv] (relief
-  // mapping's linear refinement); twin of rf_dir_secant_refine. Only across a valid far
-  // texel (a crossing, not a silhouette), and only onto a valid texel (still conservative).
-  if (steps > 0 && beta + dbeta <= 1.0)
-  {
-    vec3 farEnd = P2 + dv;
-    float farAlpha = rfAffine ? beta + dbeta : rf_dir_alpha(k1, k2, farEnd.z);
-    float farStored = rfStoredDepth(ts + farAlpha * dt);
-    float nearGap = rfStoredDepth(tc) + P2.z;
-    float farGap = farStored + farEnd.z;
-    if (farStored > 0.0 && nearGap > 0.0 && farGap < 0.0)
-    {
-      vec3 refined = P2 + (nearGap / (nearGap - farGap)) * dv;
-      vec2 refinedTC = rfProjectToTexture(refined);
-      if (rfStoredDepth(refinedTC) > 0.0)
-      {
-        P2 = refined;
-        tc = refinedTC;
-      }
-    }
-  }
+  bool secant = true;
+#else
+  bool secant = false;
 #endif
-  return true;
+  return rfk_make_search_settings(rfSearchSteps, adaptive, secant);
 }
 #endif
 
@@ -387,7 +205,7 @@ bool rf_dir_cbs(vec3 P1, vec3 T1, vec2 depthRange, out vec3 P2, out vec2 tc)
     vec3 rfN2;
 #ifdef RF_METHOD_DIR
     vec2 rfTC;
-    if (!rfTIRIn && rf_dir_cbs(rfP, rfT1, rfDepthRange(), rfP2, rfTC) && rfBackNormalAt(rfTC, rfP, rfN2))
+    if (!rfTIRIn && rfk_dir_search(rfP, rfT1, rfDepthRange(), rfCamera(), rfSearchSettings(), rfBackDepth, rfP2, rfTC) && rfBackNormalAt(rfTC, rfP, rfN2))
     {
       rfTIR = rfRefractWithPolicy(rfT1, -normalize(rfN2), rfIOR, rfT2);
     }
@@ -421,7 +239,7 @@ bool rf_dir_cbs(vec3 P1, vec3 T1, vec2 depthRange, out vec3 P2, out vec2 tc)
       vec3 rfColour = rfF * rfEnvironment(reflect(rfV, rfN1)) + (1.0 - rfF) * rfRefracted;
 #else
 #ifdef RF_FRESNEL
-      float rfF = rf_fresnel_dielectric(-dot(rfV, rfN1), rfEtaIn);
+      float rfF = rfk_fresnel_dielectric(-dot(rfV, rfN1), rfEtaIn);
 #else
       float rfF = 0.0;
 #endif

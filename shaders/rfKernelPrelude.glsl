@@ -84,6 +84,8 @@
 #define rf_log2(x) log2(x)
 #define rf_pow(x, y) pow(x, y)
 #define rf_acos(x) acos(x)
+#define rf_sin(x) sin(x)
+#define rf_cos(x) cos(x)
 #define rf_atan2(y, x) atan(y, x)
 #define rf_isinf(x) isinf(x)
 #define rf_min(a, b) min(a, b)

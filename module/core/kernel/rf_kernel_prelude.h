@@ -124,6 +124,8 @@ static inline rf_float4 rf_mul_mat4(rf_mat4 m, rf_float4 v)
 #define rf_log2 log2
 #define rf_pow pow
 #define rf_acos acos
+#define rf_sin sin
+#define rf_cos cos
 #define rf_atan2 atan2
 #define rf_isinf isinf
 static inline double rf_min(double a, double b) { return a < b ? a : b; }

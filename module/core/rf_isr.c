@@ -10,6 +10,7 @@
 rf_status rf_isr_view_distance(double back_depth, rf_vec3 P1, rf_vec3 V, double* distance)
 {
   rf_vec3 unit_view;
+  double result;
   if (distance == NULL)
   {
     return RF_ERR_NULL_ARGUMENT;
@@ -23,7 +24,12 @@ rf_status rf_isr_view_distance(double back_depth, rf_vec3 P1, rf_vec3 V, double*
   {
     return RF_ERR_DEGENERATE_DIRECTION;
   }
-  *distance = rfk_isr_view_distance(back_depth, P1, unit_view);
+  result = rfk_isr_view_distance(back_depth, P1, unit_view);
+  if (!isfinite(result))
+  {
+    return RF_ERR_NOT_FINITE;
+  }
+  *distance = result;
   return RF_OK;
 }
 
@@ -33,6 +39,7 @@ rf_status rf_isr_distance(double view_distance, double normal_distance, rf_vec3 
   rf_vec3 unit_view;
   rf_vec3 unit_normal;
   rf_vec3 unit_transmitted;
+  double result;
   rf_status status;
   if (distance == NULL)
   {
@@ -56,7 +63,12 @@ rf_status rf_isr_distance(double view_distance, double normal_distance, rf_vec3 
   {
     return RF_ERR_DEGENERATE_DIRECTION;
   }
-  *distance = rfk_isr_distance(view_distance, normal_distance, unit_view,
+  result = rfk_isr_distance(view_distance, normal_distance, unit_view,
     rfk_facing_normal(unit_view, unit_normal), unit_transmitted, eta);
+  if (!isfinite(result))
+  {
+    return RF_ERR_NOT_FINITE;
+  }
+  *distance = result;
   return RF_OK;
 }

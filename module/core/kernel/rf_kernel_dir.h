@@ -17,6 +17,7 @@
  * run-time value (with a constant bound and a break, llvmpipe unrolls every iteration and
  * pays for every texture fetch whatever the steps). Equal to RF_CBS_MAX_STEPS of the C core. */
 #define RF_KERNEL_MAX_SEARCH_STEPS 16
+#define RF_KERNEL_MAX_SEARCH_STEPS_REAL 16.0
 
 /* What the search needs of the camera: the projection (view to clip), the depth map's size in
  * texels (the viewport's), and whether the projection is parallel. */
@@ -161,7 +162,10 @@ RF_KERNEL rf_float rfk_frustum_exit(rfk_camera camera, rf_float3 P, rf_float3 T)
 RF_KERNEL int rfk_dir_adaptive_steps(rfk_dir_segment seg, rf_float2 viewportSize)
 {
   rf_float texels = rf_length2(rf_mul2(seg.dt, viewportSize));
-  return rf_int_of(rf_ceil(rf_log2(rf_max(2.0 * texels, 1.0))));
+  /* Capped before the conversion: an int of an infinite float is undefined (found by fuzzing
+   * a segment whose projection overflows). */
+  return rf_int_of(
+    rf_min(rf_ceil(rf_log2(rf_max(2.0 * texels, 1.0))), RF_KERNEL_MAX_SEARCH_STEPS_REAL));
 }
 
 /* Conservative binary search, algorithm 2: from S, halving the step dv each time, advance
@@ -272,9 +276,11 @@ RF_KERNEL rf_bool rfk_dir_search(rf_float3 P1, rf_float3 T1, rf_float2 depthRang
     tS = 0.0;
     S = P1;
   }
-  /* Zmin = Zmax (a flat back facing the camera, a single back texel), or P1 at or beyond Zmax:
-   * the segment is (nearly) a point and S.z - E.z in k2 (eq. 9) tends to 0. The exit is S;
-   * below a relative length of 1e-6 a float search could not move it anyway. */
+  /* P1 at or beyond Zmax (or Zmin = Zmax with S outside the footprint): the segment is (nearly)
+   * a point and S.z - E.z in k2 (eq. 9) tends to 0. The exit is S; below a relative length of
+   * 1e-6 a float search could not move it anyway. (Zmin = Zmax with P1 in front of the plane
+   * gives tS = tE, so the test above has already moved S back to P1: the search then runs from
+   * P1 to the plane.) */
   if (!(tE - tS > 1e-6 * rf_length3(S)))
   {
     RF_DEREF(P2) = S;

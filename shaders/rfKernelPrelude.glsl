@@ -10,16 +10,17 @@
 // prefixes with an underscore. It needs texelFetch (GLSL 1.30+) and is written for #version 150.
 //
 // Entry points (C twins: the public wrappers in module/core, which validate first):
-//   int   rfk_refract(vec3 I, vec3 N, float eta, int tirPolicy, out vec3 T)    Snell, eq. 1
+//   int   rfk_refract(vec3 I, vec3 N, float eta, int tirPolicy, out vec3 T)    Snell
 //         I, N unit (N either way round); eta = n_incident / n_transmitted; tirPolicy
 //         RF_TIR_POLICY_CLAMP (paper, section 5) or RF_TIR_POLICY_REFLECT. Returns RF_REFRACTED
 //         or RF_TOTAL_INTERNAL_REFLECTION.                                 (rf_refract[_clamped])
 //   float rfk_fresnel_dielectric(float cosI, float eta)  exact dielectric Fresnel (|cosI|)
 //   float rfk_fresnel_schlick(float cosI, float eta)
-//   vec3  rfk_builtin_environment(vec3 directionWorld)   world space, +y up (rf_builtin_environment)
+//   vec3  rfk_builtin_environment(vec3 directionWorld)   world space, +y up
+//                                                              (rf_builtin_environment)
 //   float rfk_isr_view_distance(float backDepth, vec3 P1, vec3 V)  Wyman's d_V
 //   float rfk_isr_distance(float dV, float dN, vec3 V, vec3 N1, vec3 T1, float eta)
-//         Wyman 2005 eq. 1-2                                               (rf_isr_distance)
+//         the DIR paper's eq. 2 (Wyman 2005a): P2 = P1 + d T1 is its eq. 1   (rf_isr_distance)
 //   vec2  rf_oct_encode(vec3 n) / vec3 rf_oct_decode(vec2 e)   octahedral normals, [-1, 1]^2
 //   rfk_camera rfk_make_camera(mat4 projection, vec2 viewportSize, bool isParallel)
 //         projection: view to clip as VTK's key matrix (vtkOpenGLCamera::GetKeyMatrices' vcdc,

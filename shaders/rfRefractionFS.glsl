@@ -1,5 +1,5 @@
 // Shade the front surface: DIR pass 3 (Oliveira & Brauwers 2007, sections 3.2-3.3), SIR,
-// ISR (Wyman 2005, eq. 1-2) and SSP (Sousa, GPU Gems 2 ch. 19).
+// ISR (Wyman 2005a, the DIR paper's eq. 1-2) and SSP (Sousa, GPU Gems 2 ch. 19).
 // Injected into VTK's polydata fragment shader by vtkRefractionPass. The part before the
 // RF::Impl marker goes before main(), the part after it at the end of main(). The formulas
 // (Snell, Fresnel, the DIR search, ISR's estimate, the built-in environment) are the kernel's
@@ -205,7 +205,10 @@ rfk_search_settings rfSearchSettings()
     vec3 rfN2;
 #ifdef RF_METHOD_DIR
     vec2 rfTC;
-    if (!rfTIRIn && rfk_dir_search(rfP, rfT1, rfDepthRange(), rfCamera(), rfSearchSettings(), rfBackDepth, rfP2, rfTC) && rfBackNormalAt(rfTC, rfP, rfN2))
+    if (!rfTIRIn &&
+      rfk_dir_search(rfP, rfT1, rfDepthRange(), rfCamera(), rfSearchSettings(), rfBackDepth,
+        rfP2, rfTC) &&
+      rfBackNormalAt(rfTC, rfP, rfN2))
     {
       rfTIR = rfRefractWithPolicy(rfT1, -normalize(rfN2), rfIOR, rfT2);
     }

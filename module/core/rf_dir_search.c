@@ -245,8 +245,8 @@ rf_status rf_dir_secant_refine(const rf_dir_segment* seg, int steps, rf_depth_sa
     return status;
   }
   t = rf_make2(tc[0], tc[1]);
-  rfk_dir_secant(kernel_segment(seg), steps, rf_cbs_error_bound(steps), depth_map_of(sample, context),
-    rf_make2(1.0, 1.0), P2, &t, beta);
+  rfk_dir_secant(kernel_segment(seg), steps, rf_cbs_error_bound(steps),
+    depth_map_of(sample, context), rf_make2(1.0, 1.0), P2, &t, beta);
   tc[0] = t.x;
   tc[1] = t.y;
   return RF_OK;

@@ -1,5 +1,6 @@
-/* rf_isr.h: the distance estimate of image-space refraction (ISR, Wyman 2005, eq. 1-2), the
- * formula the ISR shader runs (kernel/rf_kernel_isr.h), with the checks of the public API. */
+/* rf_isr.h: the distance estimate of image-space refraction (ISR, Wyman 2005a; eq. 1-2 of the
+ * DIR paper), the formula the ISR shader runs (kernel/rf_kernel_isr.h), with the checks of the
+ * public API. */
 #ifndef RF_ISR_H
 #define RF_ISR_H
 

@@ -69,7 +69,8 @@ int rft_make_scene(int width, int height, float* depth, rft_scene* scene)
 
 #if RFT_TEST_REFRACT_REFLECT != RFT_CASE_REFRACT_REFLECT ||                                      \
   RFT_TEST_REFRACT_CLAMP != RFT_CASE_REFRACT_CLAMP ||                                              \
-  RFT_TEST_SEARCH_FIRST != RFT_CASE_SEARCH_PAPER || RFT_CASE_SEARCH_TOWARD_CAMERA != RFT_CASE_COUNT - 1
+  RFT_TEST_SEARCH_FIRST != RFT_CASE_SEARCH_PAPER ||                                                \
+  RFT_CASE_SEARCH_TOWARD_CAMERA != RFT_CASE_COUNT - 1
 #error "kernel_glsl_reference.h and rf_kernel_cases.h number the cases differently"
 #endif
 
@@ -83,7 +84,8 @@ const char* rft_case_name(int test_case)
   static const char* const names[RFT_CASE_COUNT] = { "refract (reflect policy)",
     "refract (clamp policy)", "Fresnel (exact, Schlick, exact leaving)", "DIR alpha (eq. 9)",
     "octahedral encode", "octahedral round trip", "built-in environment", "ISR distance",
-    "frustum exit and projection", "DIR search, paper (5 steps)", "DIR search, defaults (8 adaptive + secant)",
+    "frustum exit and projection", "DIR search, paper (5 steps)",
+    "DIR search, defaults (8 adaptive + secant)",
     "DIR search, IOR 3 (5 steps + secant)", "DIR search, toward the camera" };
   return test_case >= 0 && test_case < RFT_CASE_COUNT ? names[test_case] : "unknown";
 }
@@ -146,7 +148,8 @@ int rft_is_ambiguous(const rft_scene* scene, int test_case, int i, int j)
   {
     const rf_float3 d = rft_sphere_direction(pixel, size);
     const double down = fmax(-d.y, 1e-4);
-    return fabs(d.y) < 1e-5 || (d.y < 0.0 && (rft_near_integer(d.x / down) || rft_near_integer(d.z / down)));
+    return fabs(d.y) < 1e-5 ||
+      (d.y < 0.0 && (rft_near_integer(d.x / down) || rft_near_integer(d.z / down)));
   }
   if (test_case >= RFT_CASE_SEARCH_PAPER && test_case <= RFT_CASE_SEARCH_TOWARD_CAMERA)
   {
@@ -166,7 +169,8 @@ int rft_is_ambiguous(const rft_scene* scene, int test_case, int i, int j)
       rft_evaluate_with(scene, test_case, i, j, &map, disturbed);
       for (k = 0; k < 4; ++k)
       {
-        if (!(fabs(disturbed[k] - nominal[k]) <= rft_tolerance(test_case) * (1.0 + fabs(nominal[k]))))
+        const double allowed = rft_tolerance(test_case) * (1.0 + fabs(nominal[k]));
+        if (!(fabs(disturbed[k] - nominal[k]) <= allowed))
         {
           return 1;
         }

@@ -1,5 +1,5 @@
-/* Unit tests of rf_isr (Wyman 2005, eq. 1-2: the estimate the ISR shader runs) against closed
- * forms worked out here with Snell's law directly. */
+/* Unit tests of rf_isr (Wyman 2005a, eq. 1-2 of the DIR paper: the estimate the ISR shader
+ * runs) against closed forms worked out here with Snell's law directly. */
 #include "rf_isr.h"
 
 #include "rf_test.h"

@@ -67,7 +67,8 @@ RF_KERNEL rf_float4 rfk_clip_of(rfk_camera camera, rf_float3 p)
   return rf_mul_mat4(camera.projection, rf_make4(p.x, p.y, p.z, 1.0));
 }
 
-/* Clip coordinates to [0,1]^2 texture coordinates as algorithm 1: t' = 0.5 clip.xy / clip.w + 0.5. */
+/* Clip coordinates to [0,1]^2 texture coordinates as algorithm 1:
+ * t' = 0.5 clip.xy / clip.w + 0.5. */
 RF_KERNEL rf_float2 rfk_texture_of_clip(rf_float4 clip)
 {
   return rf_make2((clip.x / clip.w) * 0.5 + 0.5, (clip.y / clip.w) * 0.5 + 0.5);

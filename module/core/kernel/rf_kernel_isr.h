@@ -1,5 +1,6 @@
 /* rf_kernel_isr.h (kernel dialect, C and GLSL): Wyman's distance estimate for image-space
- * refraction (ISR, Wyman 2005, eq. 1-2). One source for rf_isr.c and the shaders. */
+ * refraction (ISR, Wyman 2005a), as the DIR paper restates it in its eq. 1-2 (section 2.1).
+ * One source for rf_isr.c and the shaders. */
 #ifndef RF_KERNEL_ISR_H
 #define RF_KERNEL_ISR_H
 
@@ -22,9 +23,10 @@ RF_KERNEL rf_float rfk_angle_to_inward_normal(rf_float3 D, rf_float3 N1)
   return rf_atan2(rf_length3(rf_cross3(D, N1)), -rf_dot3(D, N1));
 }
 
-/* Wyman 2005, eq. 1-2: d~ = (theta_t / theta_i) d_V + (1 - theta_t / theta_i) d_N, with d_N the
- * distance along the inward normal to the far side. V, N1 (facing V) and T1 unit. At normal
- * incidence theta_t / theta_i tends to sin(theta_t) / sin(theta_i) = eta. */
+/* DIR paper eq. 2 (Wyman 2005a): d~ = (theta_t / theta_i) d_V + (1 - theta_t / theta_i) d_N,
+ * with d_N the distance along the inward normal to the far side; the exit estimate is then
+ * P1 + d~ T1 (eq. 1). V, N1 (facing V) and T1 unit. At normal incidence theta_t / theta_i tends
+ * to sin(theta_t) / sin(theta_i) = eta. */
 RF_KERNEL rf_float rfk_isr_distance(rf_float viewDistance, rf_float normalDistance, rf_float3 V,
   rf_float3 N1, rf_float3 T1, rf_float eta)
 {

@@ -45,7 +45,7 @@ RF_KERNEL rf_float3 rfk_tangential_part(rf_float3 incident, rf_float3 facingNorm
   return rf_sub3(incident, rf_scale3(facingNormal, rf_dot3(incident, facingNormal)));
 }
 
-/* Snell's law (the paper's eq. 1, GLSL refract()) with the TIR policy. `incident` and `normal`
+/* Snell's law (as GLSL refract()) with the TIR policy. `incident` and `normal`
  * are unit; the normal may face either way (rfk_facing_normal). Writes the unit transmitted
  * direction and returns RF_REFRACTED, or under TIR the policy's direction and returns
  * RF_TOTAL_INTERNAL_REFLECTION. */

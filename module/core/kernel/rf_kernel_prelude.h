@@ -97,7 +97,10 @@ static inline double rf_length2(rf_float2 v) { return sqrt(rf_dot2(v, v)); }
  * normalizes vectors it knows to be non-zero). */
 #define rf_normalize3 rf_vec3_normalize
 static inline rf_float3 rf_neg3(rf_float3 v) { return rf_vec3_make(-v.x, -v.y, -v.z); }
-static inline rf_float3 rf_div3(rf_float3 v, double s) { return rf_vec3_make(v.x / s, v.y / s, v.z / s); }
+static inline rf_float3 rf_div3(rf_float3 v, double s)
+{
+  return rf_vec3_make(v.x / s, v.y / s, v.z / s);
+}
 /* GLSL mix(a, b, t) = a + (b - a) t, per component. */
 static inline rf_float3 rf_mix3(rf_float3 a, rf_float3 b, double t)
 {

@@ -68,9 +68,10 @@ RF_KERNEL int rfk_refract(rf_float3 incident, rf_float3 normal, rf_float eta, in
     {
       /* At 90 degrees the transmitted ray grazes the surface along the tangential part (in the
        * plane of incidence). TIR needs sin(theta_i) > 1/eta > 0, so the part vanishes only
-       * through rounding: then the ray goes on unbent. */
-      rf_float tangentLength = rf_length3(tangent);
-      RF_DEREF(transmitted) = tangentLength > 0.0 ? rf_div3(tangent, tangentLength) : incident;
+       * through rounding: then the ray goes on unbent. rf_normalize3, not a division by the
+       * length: in C a part of 1e-160 has a subnormal square and an inexact length (found by
+       * fuzzing: |T| = 1.0000036), which rf_vec3_normalize avoids. */
+      RF_DEREF(transmitted) = rf_length3(tangent) > 0.0 ? rf_normalize3(tangent) : incident;
     }
     else
     {

@@ -8,8 +8,9 @@
 // this stage's own: its uniforms, the safe normal (derivatives), the position reconstruction.
 // Defines set by the pass: RF_METHOD_{SIR,DIR,ISR,SSP}, RF_TIR_CLAMP, RF_FRESNEL,
 // RF_ENV_CUBEMAP, RF_DEPTH_RANGE_BOUNDS, RF_ADAPTIVE_SEARCH, RF_SECANT_REFINE,
-// RF_MAX_SEARCH_STEPS; RF_POSITION_VC and RF_NORMAL_VC name the
-// mapper's view-space position and normal.
+// RF_MAX_SEARCH_STEPS (no longer read: the kernel caps the steps at its own
+// RF_KERNEL_MAX_SEARCH_STEPS, checked equal to RF_CBS_MAX_STEPS in C); RF_POSITION_VC and
+// RF_NORMAL_VC name the mapper's view-space position and normal.
 #define RF_STAGE_BACK 1
 #define RF_STAGE_FRONT 2
 #define RF_STAGE_DEBUG 3

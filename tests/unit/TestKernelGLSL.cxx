@@ -99,7 +99,7 @@ vtkSmartPointer<vtkRenderWindow> MakeWindow(std::string& description)
     description = "EGL: " + description;
     return window;
   }
-  std::cout << "No EGL context (" << error << "); trying an on-screen-less X window.\n";
+  std::cout << "No EGL context (" << error << "); trying an off-screen X window.\n";
   window = vtkSmartPointer<vtkRenderWindow>::New();
   window->SetSize(kSize, kSize);
   window->SetOffScreenRendering(1);

@@ -22,6 +22,9 @@
 //   float rfk_isr_distance(float dV, float dN, vec3 V, vec3 N1, vec3 T1, float eta)
 //         the DIR paper's eq. 2 (Wyman 2005a): P2 = P1 + d T1 is its eq. 1   (rf_isr_distance)
 //   vec2  rf_oct_encode(vec3 n) / vec3 rf_oct_decode(vec2 e)   octahedral normals, [-1, 1]^2
+//   float rfk_ssp_fresnel(float NdotV, float bias, float power)   Sousa's listing 19-3
+//   vec2  rfk_ssp_perturbed(vec2 own, vec3 N, float strength, float scale)   SSP's lookup
+//         position: own + N.xy strength scale (own in [0, 1]^2)
 //   rfk_camera rfk_make_camera(mat4 projection, vec2 viewportSize, bool isParallel)
 //         projection: view to clip as VTK's key matrix (vtkOpenGLCamera::GetKeyMatrices' vcdc,
 //         uploaded as VTK does); viewportSize: the depth map's size in texels.

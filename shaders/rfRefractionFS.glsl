@@ -142,12 +142,6 @@ float rfISRDistance(vec3 P1, vec3 V, vec3 N1, vec3 T1, float eta)
 #endif
 
 #ifdef RF_METHOD_SSP
-// Sousa's Fresnel approximation (listing 19-3) with the chapter's bias and power.
-float rfSSPFresnel(float NdotV)
-{
-  return max(rfSSPFresnelBias + (1.0 - rfSSPFresnelBias) * pow(1.0 - NdotV, rfSSPFresnelPower), 0.0);
-}
-
 // The opaque scene behind the glass at a perturbed screen position; the refraction mask in
 // alpha (listing 19-2) keeps the unperturbed position where the perturbed one is not glass
 // (an object in front, or outside the glass). Where the glass lies over the background, the
@@ -230,13 +224,14 @@ rfk_search_settings rfSearchSettings()
     {
 #if defined(RF_METHOD_SSP)
       vec2 rfOwn = (gl_FragCoord.xy - rfViewport.xy) / rfViewport.zw;
-      vec2 rfOffset = rfN1.xy * rfSSPStrength;
       vec3 rfRefracted = vec3(
-        rfSSPScene(rfOwn, rfOwn + rfOffset * (1.0 + rfChromaticAberration), rfT1).r,
-        rfSSPScene(rfOwn, rfOwn + rfOffset, rfT1).g,
-        rfSSPScene(rfOwn, rfOwn + rfOffset * (1.0 - rfChromaticAberration), rfT1).b);
+        rfSSPScene(rfOwn,
+          rfk_ssp_perturbed(rfOwn, rfN1, rfSSPStrength, 1.0 + rfChromaticAberration), rfT1).r,
+        rfSSPScene(rfOwn, rfk_ssp_perturbed(rfOwn, rfN1, rfSSPStrength, 1.0), rfT1).g,
+        rfSSPScene(rfOwn,
+          rfk_ssp_perturbed(rfOwn, rfN1, rfSSPStrength, 1.0 - rfChromaticAberration), rfT1).b);
 #ifdef RF_FRESNEL
-      float rfF = rfSSPFresnel(-dot(rfV, rfN1));
+      float rfF = rfk_ssp_fresnel(-dot(rfV, rfN1), rfSSPFresnelBias, rfSSPFresnelPower);
 #else
       float rfF = 0.0;
 #endif

@@ -84,7 +84,8 @@ const char* rft_case_name(int test_case)
   static const char* const names[RFT_CASE_COUNT] = { "refract (reflect policy)",
     "refract (clamp policy)", "Fresnel (exact, Schlick, exact leaving)", "DIR alpha (eq. 9)",
     "octahedral encode", "octahedral round trip", "built-in environment", "ISR distance",
-    "frustum exit and projection", "DIR search, paper (5 steps)",
+    "frustum exit and projection", "SSP (Fresnel, perturbed position)",
+    "DIR search, paper (5 steps)",
     "DIR search, defaults (8 adaptive + secant)",
     "DIR search, IOR 3 (5 steps + secant)", "DIR search, toward the camera" };
   return test_case >= 0 && test_case < RFT_CASE_COUNT ? names[test_case] : "unknown";

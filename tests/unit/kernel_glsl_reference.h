@@ -26,7 +26,7 @@ int rft_make_scene(int width, int height, float* depth, rft_scene* scene);
  * refractions, and the searches from RFT_TEST_SEARCH_FIRST to the last case. */
 #define RFT_TEST_REFRACT_REFLECT 0
 #define RFT_TEST_REFRACT_CLAMP 1
-#define RFT_TEST_SEARCH_FIRST 9
+#define RFT_TEST_SEARCH_FIRST 10
 
 int rft_case_count(void);
 const char* rft_case_name(int test_case);

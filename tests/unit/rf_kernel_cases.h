@@ -12,6 +12,7 @@
 #include "rf_kernel_isr.h"
 #include "rf_kernel_octahedral.h"
 #include "rf_kernel_optics.h"
+#include "rf_kernel_ssp.h"
 #endif
 
 #define RFT_CASE_REFRACT_REFLECT 0
@@ -23,11 +24,12 @@
 #define RFT_CASE_ENVIRONMENT 6
 #define RFT_CASE_ISR 7
 #define RFT_CASE_FRUSTUM_EXIT 8
-#define RFT_CASE_SEARCH_PAPER 9
-#define RFT_CASE_SEARCH_DEFAULTS 10
-#define RFT_CASE_SEARCH_STRONG 11
-#define RFT_CASE_SEARCH_TOWARD_CAMERA 12
-#define RFT_CASE_COUNT 13
+#define RFT_CASE_SSP 9
+#define RFT_CASE_SEARCH_PAPER 10
+#define RFT_CASE_SEARCH_DEFAULTS 11
+#define RFT_CASE_SEARCH_STRONG 12
+#define RFT_CASE_SEARCH_TOWARD_CAMERA 13
+#define RFT_CASE_COUNT 14
 
 /* The glass sphere of the search cases, in view space. */
 #define RFT_SPHERE_Z -5.0
@@ -180,6 +182,12 @@ RF_KERNEL rf_float4 rft_evaluate(int testCase, rf_float2 pixel, rf_float2 size, 
     rfk_refract(V, N1, 1.0 / 1.5, RF_TIR_POLICY_CLAMP, RF_ADDR(T1));
     rf_float dV = rfk_isr_view_distance(4.0 + u.y, rf_make3(0.0, 0.0, -3.0), V);
     return rf_make4(rfk_isr_distance(dV, 2.0 - u.x, V, N1, T1, 1.0 / 1.5), dV, 0.0, 0.0);
+  }
+  if (testCase == RFT_CASE_SSP)
+  {
+    rf_float3 N = rft_normal(pixel, size);
+    rf_float2 p = rfk_ssp_perturbed(u, N, 0.05 + 0.1 * u.y, 1.0 + 0.3 * u.x);
+    return rf_make4(rfk_ssp_fresnel(u.x, 0.1 + 0.3 * u.y, 1.0 + 4.0 * u.y), p.x, p.y, 0.0);
   }
   if (testCase == RFT_CASE_SEARCH_PAPER)
   {

@@ -35,7 +35,9 @@
 //         P1 the entry point and T1 the unit refracted direction in view space; depthRange
 //         (Zmin, Zmax) as positive depths (Zmin > Zmax: nothing captured, returns false);
 //         backDepth holds positive depths (-z_view) per viewport pixel, 0 where empty, read
-//         with texelFetch (level 0, never filtered).                         (rf_dir_search)
+//         with texelFetch (level 0, never filtered). tc: P2's texture coordinates by eq. 10,
+//         i.e. exactly the texel the search accepted P2 on (read the exit normal there).
+//                                                                          (rf_dir_search)
 //   vec2  rfk_project_to_texture(rfk_camera camera, vec3 p)   view space to [0,1]^2
 //   float rfk_dir_alpha(float k1, float k2, float z)           eq. 9       (rf_dir_alpha)
 //   float rfk_frustum_exit(rfk_camera camera, vec3 P, vec3 T)  the ray's exit from the frustum

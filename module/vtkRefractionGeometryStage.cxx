@@ -265,7 +265,8 @@ bool vtkRefractionGeometryStage::PostReplaceShaderValues(std::string&, std::stri
   const size_t marker = source.find(kImplMarker);
   std::string declarations = source.substr(0, marker);
   const std::string body = source.substr(marker + std::string(kImplMarker).size());
-  vtkShaderProgram::Substitute(declarations, "//RF::Common", rfCommonSource);
+  vtkShaderProgram::Substitute(
+    declarations, "//RF::Common", std::string(rfKernelSource) + rfCommonSource);
   // The mapper declares vertexVC only with lighting, and normalVCVSOutput only with normals
   // or lighting; otherwise rebuild them from the fragment's coordinates.
   const bool haveVertexVC = fragmentShader.find("vec4 vertexVC") != std::string::npos;

@@ -5,7 +5,6 @@
 #include "vtkShaderProgram.h"
 
 #include "rfShaders.h"
-#include "rf_validate.h"
 
 vtkStandardNewMacro(vtkRefractionMethodDIR);
 
@@ -13,7 +12,6 @@ vtkStandardNewMacro(vtkRefractionMethodDIR);
 void vtkRefractionMethodDIR::AppendDefines(std::ostream& defines, vtkRefractionPass* settings) const
 {
   this->Superclass::AppendDefines(defines, settings);
-  defines << "#define RF_MAX_SEARCH_STEPS " << RF_CBS_MAX_STEPS << "\n";
   if (settings->GetAdaptiveSearch())
   {
     defines << "#define RF_ADAPTIVE_SEARCH\n";

@@ -80,6 +80,8 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
   std::ostringstream defines;
   method->AppendDefines(defines, settings);
   defines << "#define RF_MAX_MATERIALS " << MaximumMaterials << "\n";
+  // The back surface keeps its depth in alpha, beside the normal (vtkRefractionTargets).
+  defines << "#define RF_DEPTH_CHANNEL a\n";
   if (settings->GetTIRPolicy() == vtkRefractionPass::TIR_CLAMP)
   {
     defines << "#define RF_TIR_CLAMP\n";
@@ -106,7 +108,8 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
   }
   std::string source = rfShadeFSSource;
   vtkShaderProgram::Substitute(source, "in vec2 texCoord;", "in vec2 texCoord;\n" + defines.str());
-  vtkShaderProgram::Substitute(source, "//RF::Common", rfCommonSource);
+  vtkShaderProgram::Substitute(
+    source, "//RF::Common", std::string(rfKernelSource) + rfCommonSource);
   vtkShaderProgram::Substitute(source, "//RF::Environment", rfEnvironmentSource);
   vtkShaderProgram::Substitute(source, "//RF::Method", method->GetShaderSource());
   return this->Build(ren, *this->GetProgram(debug), source);

@@ -5,12 +5,7 @@ uniform sampler2D rfBackSurface;
 // The stored back depth at a texture coordinate; 0 outside the image or the silhouette.
 float rfStoredDepth(vec2 tc)
 {
-  if (any(lessThan(tc, vec2(0.0))) || any(greaterThan(tc, vec2(1.0))))
-  {
-    return 0.0;
-  }
-  // texelFetch: the depths are never filtered, and an unfiltered fetch is the cheapest one.
-  return texelFetch(rfBackSurface, ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0)), 0).a;
+  return rfk_stored_depth(rfBackSurface, tc, rfViewport.zw);
 }
 
 // The exit normal at a texel of the back capture; the entry pixel's own back texel (always
@@ -28,7 +23,7 @@ bool rfBackNormalAt(vec2 tc, vec3 P1, out vec3 N2)
 
 float rfFresnelWeight(float cosIncident, float etaIn)
 {
-  return rf_fresnel_dielectric(cosIncident, etaIn);
+  return rfk_fresnel_dielectric(cosIncident, etaIn);
 }
 
 vec3 rfTransmittedColour(vec2 own, vec3 N1, vec3 T1, vec3 P2, vec3 T2)

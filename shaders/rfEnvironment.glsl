@@ -1,34 +1,20 @@
-// The built-in environment: the GLSL twin of rf_builtin_environment (module/core/rf_environment.c).
-// World space, +y up. Keep the two formulas identical.
-vec3 rfBuiltinEnvironment(vec3 directionWorld)
+// The environment along a view-space direction: the renderer's cube map (RF_ENV_CUBEMAP), or
+// its background (RF_ENV_BACKGROUND: the colour the screen shows in that direction; VTK's
+// gradient runs from Background at the bottom of the viewport to Background2 at the top),
+// else the built-in sky and ground (rfk_builtin_environment of the kernel, the formula
+// rf_builtin_environment runs in C). Inserted after rfKernelSource; needs the uniforms
+// rfViewToWorld and rfVCDC, with RF_ENV_CUBEMAP rfEnvironmentCube and rfEnvMatrix, with
+// RF_ENV_BACKGROUND rfBackground and rfBackground2.
+vec3 rfEnvironment(vec3 directionVC)
 {
-  const vec3 horizon = vec3(0.85, 0.88, 0.92);
-  const vec3 zenith = vec3(0.15, 0.35, 0.75);
-  const vec3 tileDark = vec3(0.70, 0.22, 0.15);
-  const vec3 tileLight = vec3(0.95, 0.93, 0.85);
-  const vec3 sunColour = vec3(3.0, 2.6, 1.8);
-  float len = length(directionWorld);
-  if (!(len > 0.0))
-  {
-    return horizon;
-  }
-  vec3 d = directionWorld / len;
-  if (d.y >= 0.0)
-  {
-    float elevation = sqrt(d.y);
-    float azimuth = atan(d.z, d.x);
-    float sector = fract(azimuth * (6.0 / 3.14159265358979));
-    float meridian = 1.0 - smoothstep(0.0, 0.04, min(sector, 1.0 - sector));
-    float ring = 1.0 - smoothstep(0.0, 0.02, abs(d.y - 0.5));
-    float sunCos = dot(d, vec3(0.48, 0.6, -0.64));
-    float sun = pow(max(sunCos, 0.0), 400.0);
-    float line = max(meridian, ring) * 0.6;
-    return mix(horizon, zenith, elevation) * (1.0 - line) + sunColour * sun;
-  }
-  float down = -d.y;
-  float u = d.x / max(down, 1e-4);
-  float v = d.z / max(down, 1e-4);
-  float checker = fract((floor(u) + floor(v)) * 0.5) * 2.0;
-  float fade = smoothstep(0.0, 0.35, down);
-  return mix(horizon, mix(tileLight, tileDark, checker), fade);
+#if defined(RF_ENV_CUBEMAP)
+  return texture(rfEnvironmentCube, rfEnvMatrix * (rfViewToWorld * directionVC)).rgb;
+#elif defined(RF_ENV_BACKGROUND)
+  vec4 c = rfVCDC * vec4(directionVC, 0.0);
+  float up = c.w > 1e-6 * length(directionVC) ? 0.5 + 0.5 * c.y / c.w
+    : (directionVC.y >= 0.0 ? 1.0 : 0.0);
+  return mix(rfBackground, rfBackground2, clamp(up, 0.0, 1.0));
+#else
+  return rfk_builtin_environment(rfViewToWorld * directionVC);
+#endif
 }

@@ -9,7 +9,7 @@ bool rfFindExit(vec3 P1, vec3 V, vec3 N1, vec3 T1, float etaIn, out vec3 P2, out
 
 float rfFresnelWeight(float cosIncident, float etaIn)
 {
-  return rf_fresnel_dielectric(cosIncident, etaIn);
+  return rfk_fresnel_dielectric(cosIncident, etaIn);
 }
 
 vec3 rfTransmittedColour(vec2 own, vec3 N1, vec3 T1, vec3 P2, vec3 T2)

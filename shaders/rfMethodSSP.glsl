@@ -8,12 +8,6 @@ uniform float rfSSPFresnelPower;
 uniform float rfChromaticAberration;
 uniform int rfSSPMask;
 
-// Sousa's Fresnel approximation (listing 19-3) with the chapter's bias and power.
-float rfSSPFresnel(float NdotV)
-{
-  return max(rfSSPFresnelBias + (1.0 - rfSSPFresnelBias) * pow(1.0 - NdotV, rfSSPFresnelPower), 0.0);
-}
-
 // The opaque scene behind the glass at a perturbed screen position; the refraction mask in
 // alpha (listing 19-2) keeps the unperturbed position where the perturbed one is not glass
 // (an object in front, or outside the glass). Where the glass lies over the background, the
@@ -35,13 +29,13 @@ bool rfFindExit(vec3 P1, vec3 V, vec3 N1, vec3 T1, float etaIn, out vec3 P2, out
 
 float rfFresnelWeight(float cosIncident, float etaIn)
 {
-  return rfSSPFresnel(cosIncident);
+  return rfk_ssp_fresnel(cosIncident, rfSSPFresnelBias, rfSSPFresnelPower);
 }
 
 vec3 rfTransmittedColour(vec2 own, vec3 N1, vec3 T1, vec3 P2, vec3 T2)
 {
-  vec2 offset = N1.xy * rfSSPStrength;
-  return vec3(rfSSPScene(own, own + offset * (1.0 + rfChromaticAberration), T1).r,
-    rfSSPScene(own, own + offset, T1).g,
-    rfSSPScene(own, own + offset * (1.0 - rfChromaticAberration), T1).b);
+  return vec3(
+    rfSSPScene(own, rfk_ssp_perturbed(own, N1, rfSSPStrength, 1.0 + rfChromaticAberration), T1).r,
+    rfSSPScene(own, rfk_ssp_perturbed(own, N1, rfSSPStrength, 1.0), T1).g,
+    rfSSPScene(own, rfk_ssp_perturbed(own, N1, rfSSPStrength, 1.0 - rfChromaticAberration), T1).b);
 }

@@ -31,23 +31,6 @@ ivec2 rfPixel;
 
 //RF::Environment
 
-// The environment along a view-space direction: the renderer's cube map, or its background
-// (the colour the screen shows in that direction: VTK's gradient runs from Background at the
-// bottom of the viewport to Background2 at the top), or the built-in sky and ground.
-vec3 rfEnvironment(vec3 directionVC)
-{
-#if defined(RF_ENV_CUBEMAP)
-  return texture(rfEnvironmentCube, rfEnvMatrix * (rfViewToWorld * directionVC)).rgb;
-#elif defined(RF_ENV_BACKGROUND)
-  vec4 c = rfVCDC * vec4(directionVC, 0.0);
-  float up = c.w > 1e-6 * length(directionVC) ? 0.5 + 0.5 * c.y / c.w
-    : (directionVC.y >= 0.0 ? 1.0 : 0.0);
-  return mix(rfBackground, rfBackground2, clamp(up, 0.0, 1.0));
-#else
-  return rfBuiltinEnvironment(rfViewToWorld * directionVC);
-#endif
-}
-
 // The view-space point of depth -z = depth seen through texture coordinate tc.
 vec3 rfPositionFromDepth(vec2 tc, float depth)
 {
@@ -56,96 +39,27 @@ vec3 rfPositionFromDepth(vec2 tc, float depth)
   return rfParallel == 1 ? vec3(p.xy, -depth) : p * (depth / -p.z);
 }
 
+rfk_camera rfCamera()
+{
+  return rfk_make_camera(rfVCDC, rfViewport.zw, rfParallel == 1);
+}
+
 vec2 rfProjectToTexture(vec3 p)
 {
-  vec4 c = rfVCDC * vec4(p, 1.0);
-  return (c.xy / c.w) * 0.5 + 0.5;
+  return rfk_project_to_texture(rfCamera(), p);
 }
 
-// Exact unpolarized dielectric Fresnel reflectance; twin of rf_fresnel_dielectric (rf_optics.c).
-// eta = n_incident / n_transmitted.
-float rf_fresnel_dielectric(float cosIncident, float eta)
-{
-  // Equal indices are no interface: nothing is reflected, even at grazing incidence where
-  // 1 - (1 - c^2) rounds to 0 and the formula below would report TIR.
-  if (eta == 1.0)
-  {
-    return 0.0;
-  }
-  float c = clamp(cosIncident, 0.0, 1.0);
-  float sin2t = eta * eta * (1.0 - c * c);
-  if (sin2t >= 1.0)
-  {
-    return 1.0;
-  }
-  float cost = sqrt(1.0 - sin2t);
-  float rs = (eta * c - cost) / (eta * c + cost);
-  float rp = (c - eta * cost) / (c + eta * cost);
-  return 0.5 * (rs * rs + rp * rp);
-}
+#ifdef RF_TIR_CLAMP
+#define RF_TIR_POLICY RF_TIR_POLICY_CLAMP
+#else
+#define RF_TIR_POLICY RF_TIR_POLICY_REFLECT
+#endif
 
-// Snell's law with the TIR policy of the build; twins of rf_refract_clamped (the paper's
-// section 5: clamp to the critical angle, the ray leaves tangent to the surface) and
-// rf_refract (follow TIR by one reflection). Returns 1 when TIR occurred.
+// Snell's law with the TIR policy of the build (the paper's clamp, or one reflection).
+// Returns 1 when TIR occurred.
 int rfRefractWithPolicy(vec3 incident, vec3 normal, float eta, out vec3 transmitted)
 {
-  // IOR = 1: the ray goes straight on, exactly (Snell's formula only up to rounding).
-  if (eta == 1.0)
-  {
-    transmitted = incident;
-    return 0;
-  }
-  if (dot(incident, normal) > 0.0)
-  {
-    normal = -normal;
-  }
-  float cosI = -dot(incident, normal);
-  // The tangential part of the incident direction (sin(theta_i) long). Refracting as
-  // eta tangent - sqrt(k) N instead of refract()'s eta I + (eta cosI - sqrt(k)) N avoids the
-  // cancellation of eta I against eta cosI N, which at eta = 1000 (IOR 1000 at the exit)
-  // leaves 6% rounding noise in a float's tangential part; twin of rf_refract.
-  vec3 tangent = incident + cosI * normal;
-  float k = 1.0 - eta * eta * dot(tangent, tangent);
-  if (k < 0.0)
-  {
-#ifdef RF_TIR_CLAMP
-    float lt = length(tangent);
-    transmitted = lt > 0.0 ? tangent / lt : incident;
-#else
-    transmitted = incident + 2.0 * cosI * normal;
-#endif
-    return 1;
-  }
-  transmitted = normalize(eta * tangent - sqrt(k) * normal);
-  return 0;
-}
-
-// The largest t >= 0 for which P + t T stays inside the frustum's side and near planes
-// (clip space -w <= x, y <= w and -w <= z), and with `withFar` inside its far plane too
-// (z <= w): the part of the ray the captured depth maps can answer for.
-float rfFrustumExit(vec3 P, vec3 T, bool withFar)
-{
-  vec4 c0 = rfVCDC * vec4(P, 1.0);
-  vec4 c1 = rfVCDC * vec4(T, 0.0);
-  vec4 a0 = vec4(c0.w - c0.x, c0.w + c0.x, c0.w - c0.y, c0.w + c0.y);
-  vec4 a1 = vec4(c1.w - c1.x, c1.w + c1.x, c1.w - c1.y, c1.w + c1.y);
-  float t = 1e30;
-  for (int i = 0; i < 4; ++i)
-  {
-    if (a1[i] < 0.0)
-    {
-      t = min(t, max(a0[i], 0.0) / -a1[i]);
-    }
-  }
-  if (c1.w + c1.z < 0.0)
-  {
-    t = min(t, max(c0.w + c0.z, 0.0) / -(c1.w + c1.z));
-  }
-  if (withFar && c1.w - c1.z < 0.0)
-  {
-    t = min(t, max(c0.w - c0.z, 0.0) / -(c1.w - c1.z));
-  }
-  return t;
+  return rfk_refract(incident, normal, eta, RF_TIR_POLICY, transmitted);
 }
 
 #ifdef RF_SCENE_REFRACTION
@@ -172,7 +86,7 @@ float rfSceneDistance(vec2 tc, out bool background)
 bool rfSceneAlong(vec3 P, vec3 T, out vec3 colour)
 {
   colour = vec3(0.0);
-  float tEnd = rfFrustumExit(P, T, true);
+  float tEnd = rfk_frustum_exit_with_far(rfCamera(), P, T);
   if (!(tEnd > 0.0) || !(tEnd < 1e29))
   {
     return false;

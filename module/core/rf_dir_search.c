@@ -1,6 +1,8 @@
 /* rf_dir_search.c: DIR ray / perspective-depth-map intersection
- * (Oliveira and Brauwers 2007, sections 3.2-3.3). */
+ * (Oliveira and Brauwers 2007, sections 3.2-3.3): validation around kernel/rf_kernel_dir.h. */
 #include "rf_dir_search.h"
+
+#include "kernel/rf_kernel_dir.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -11,6 +13,49 @@
 
 /* Relative size of S.z - E.z below which k2 (eq. 9) is meaningless. */
 #define RF_DIR_MIN_RELATIVE_RANGE 1e-12
+
+#if RF_KERNEL_MAX_SEARCH_STEPS != RF_CBS_MAX_STEPS
+#error "the kernel's step cap and the validated step range disagree"
+#endif
+
+static rf_mat4 matrix_of(const double projection[16])
+{
+  rf_mat4 m;
+  int i;
+  for (i = 0; i < 16; ++i)
+  {
+    m.m[i] = projection[i];
+  }
+  return m;
+}
+
+/* The camera of a public call: the projection; a C sampler needs no viewport size. */
+static rfk_camera camera_of(const double projection[16])
+{
+  return rfk_make_camera(matrix_of(projection), rf_make2(1.0, 1.0), RF_FALSE);
+}
+
+/* The public segment as the kernel's (k2 as computed, so never affine). */
+static rfk_dir_segment kernel_segment(const rf_dir_segment* seg)
+{
+  rfk_dir_segment k;
+  k.S = seg->S;
+  k.dv = rf_sub3(seg->E, seg->S);
+  k.ts = rf_make2(seg->ts[0], seg->ts[1]);
+  k.dt = rf_make2(seg->te[0] - seg->ts[0], seg->te[1] - seg->ts[1]);
+  k.k1 = seg->k1;
+  k.k2 = seg->k2;
+  k.affine = RF_FALSE;
+  return k;
+}
+
+static rf_depth_map depth_map_of(rf_depth_sampler sample, void* context)
+{
+  rf_depth_map map;
+  map.sample = sample;
+  map.context = context;
+  return map;
+}
 
 static int all_finite(const double* values, int count)
 {
@@ -25,32 +70,27 @@ static int all_finite(const double* values, int count)
   return 1;
 }
 
-/* Projects a view-space point to [0,1]^2 texture coordinates as Algorithm 1:
- * clip = projection (p, 1), ndc = clip.xy / clip.w, t' = 0.5 ndc + 0.5. */
+/* Projects a view-space point to [0,1]^2 texture coordinates (rfk_texture_of_clip), refusing
+ * points on or behind the camera plane, where the perspective division (and eq. 8's w = -z)
+ * no longer describes the image. */
 static rf_status project_to_texture(const double projection[16], rf_vec3 p, double tc[2])
 {
-  int row;
-  double clip[4];
-  for (row = 0; row < 4; ++row)
+  const rf_float4 clip = rfk_clip_of(camera_of(projection), p);
+  rf_float2 t;
+  if (!(clip.w > 0.0))
   {
-    const double* m = projection + 4 * row;
-    clip[row] = m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3];
+    return isfinite(clip.w) ? RF_ERR_DEGENERATE_DIRECTION : RF_ERR_NOT_FINITE;
   }
-  /* w <= 0 puts the point on or behind the camera plane, where the
-   * perspective division (and eq. 8's w = -z) no longer describes the image. */
-  if (!(clip[3] > 0.0))
-  {
-    return isfinite(clip[3]) ? RF_ERR_DEGENERATE_DIRECTION : RF_ERR_NOT_FINITE;
-  }
-  tc[0] = 0.5 * (clip[0] / clip[3]) + 0.5;
-  tc[1] = 0.5 * (clip[1] / clip[3]) + 0.5;
+  t = rfk_texture_of_clip(clip);
+  tc[0] = t.x;
+  tc[1] = t.y;
   return all_finite(tc, 2) ? RF_OK : RF_ERR_NOT_FINITE;
 }
 
 /* The point of the ray P1 + t T1 on the plane z = plane_z (eq. 3-4). */
 static rf_vec3 ray_at_plane(rf_vec3 P1, rf_vec3 T1, double plane_z)
 {
-  rf_vec3 point = rf_vec3_add(P1, rf_vec3_scale(T1, (plane_z - P1.z) / T1.z));
+  rf_vec3 point = rf_add3(P1, rf_scale3(T1, rfk_ray_plane_parameter(P1, T1, plane_z)));
   /* Exactly on the plane by construction; remove the rounding so that
    * alpha (eq. 9) is exactly 0 at S and 1 at E. */
   point.z = plane_z;
@@ -106,7 +146,7 @@ rf_status rf_dir_segment_init(rf_vec3 P1, rf_vec3 T1, double depth_min, double d
   }
   /* eq. 9 constants; S.z - E.z = depth_max - depth_min > 0 here. */
   result.k1 = 1.0 / result.S.z;
-  result.k2 = result.S.z * result.E.z / (result.S.z - result.E.z);
+  result.k2 = rfk_dir_k2(result.S.z, result.E.z);
   /* A subnormal depth makes 1 / S.z overflow, huge depths S.z E.z: eq. 9 would then give
    * infinite or NaN parameters (found by fuzzing, tests/fuzz). */
   if (!isfinite(result.k1) || !isfinite(result.k2))
@@ -134,12 +174,12 @@ double rf_dir_alpha(const rf_dir_segment* seg, double Pz)
   {
     return NAN;
   }
-  /* eq. 9: eq. 8 solved for alpha; perspective makes alpha != beta (eq. 5). */
-  return (1.0 / Pz - seg->k1) * seg->k2;
+  return rfk_dir_alpha(seg->k1, seg->k2, Pz);
 }
 
 void rf_dir_texcoord(const rf_dir_segment* seg, double alpha, double tc[2])
 {
+  rf_float2 t;
   if (tc == NULL)
   {
     return;
@@ -150,9 +190,9 @@ void rf_dir_texcoord(const rf_dir_segment* seg, double alpha, double tc[2])
     tc[1] = NAN;
     return;
   }
-  /* eq. 10, written as Algorithm 1's t'_s + alpha dt. */
-  tc[0] = seg->ts[0] + alpha * (seg->te[0] - seg->ts[0]);
-  tc[1] = seg->ts[1] + alpha * (seg->te[1] - seg->ts[1]);
+  t = rfk_dir_texcoord(kernel_segment(seg), alpha);
+  tc[0] = t.x;
+  tc[1] = t.y;
 }
 
 /* The arguments rf_dir_cbs and rf_dir_secant_refine share. */
@@ -169,48 +209,18 @@ static rf_status rf_check_search_arguments(const rf_dir_segment* seg, int steps,
 rf_status rf_dir_cbs(const rf_dir_segment* seg, int steps, rf_depth_sampler sample, void* context,
   rf_vec3* P2, double tc[2], double* beta)
 {
-  rf_vec3 position;
-  rf_vec3 step;
-  double step_beta = 1.0;
-  double position_beta = 0.0;
-  int i;
+  rfk_dir_segment k;
+  double bracket;
   rf_status status;
   status = rf_check_search_arguments(seg, steps, sample, P2, tc, beta);
   if (status != RF_OK)
   {
     return status;
   }
-
-  /* Algorithm 2: P2 = S, dv = E - S. */
-  position = seg->S;
-  step = rf_vec3_sub(seg->E, seg->S);
-  for (i = 0; i < steps; ++i)
-  {
-    double candidate_z;
-    double candidate_tc[2];
-    double stored_depth;
-    step = rf_vec3_scale(step, 0.5);
-    step_beta *= 0.5; /* beta of eq. 5 moves with dv: exact powers of two */
-    candidate_z = position.z + step.z;
-    rf_dir_texcoord(seg, rf_dir_alpha(seg, candidate_z), candidate_tc); /* eq. 9-10 */
-    stored_depth = sample(context, candidate_tc);
-    /* Advance only while the candidate is in front of the stored back
-     * surface. Empty texels store 0, which no point in front of the camera
-     * is nearer than, so the ray never advances across the silhouette: this
-     * is what makes the search conservative (section 3.3). */
-    if (-candidate_z < stored_depth)
-    {
-      position = rf_vec3_add(position, step);
-      position_beta += step_beta;
-    }
-  }
-
-  /* The loop's last texture coordinate may belong to a rejected candidate:
-   * recompute it for the accepted point (bit-identical to the accepted
-   * candidate's, since position.z is computed the same way). */
-  *P2 = position;
-  rf_dir_texcoord(seg, rf_dir_alpha(seg, position.z), tc);
-  *beta = position_beta;
+  k = kernel_segment(seg);
+  *P2 = rfk_dir_cbs(k, steps, depth_map_of(sample, context), rf_make2(1.0, 1.0), beta, &bracket);
+  /* eq. 10 at the accepted point: the texel the search accepted it on. */
+  rf_dir_texcoord(seg, rfk_dir_alpha(k.k1, k.k2, P2->z), tc);
   return RF_OK;
 }
 
@@ -227,47 +237,67 @@ double rf_cbs_error_bound(int steps)
 rf_status rf_dir_secant_refine(const rf_dir_segment* seg, int steps, rf_depth_sampler sample,
   void* context, rf_vec3* P2, double tc[2], double* beta)
 {
-  rf_vec3 far_end;
-  double far_tc[2];
-  double refined_tc[2];
-  double near_gap;
-  double far_gap;
-  double far_stored;
-  double t;
-  rf_vec3 refined;
-  double bracket;
+  rf_float2 t;
   rf_status status;
   status = rf_check_search_arguments(seg, steps, sample, P2, tc, beta);
   if (status != RF_OK)
   {
     return status;
   }
-  bracket = ldexp(1.0, -steps);
-  if (*beta + bracket > 1.0)
+  t = rf_make2(tc[0], tc[1]);
+  rfk_dir_secant(kernel_segment(seg), steps, rf_cbs_error_bound(steps),
+    depth_map_of(sample, context), rf_make2(1.0, 1.0), P2, &t, beta);
+  tc[0] = t.x;
+  tc[1] = t.y;
+  return RF_OK;
+}
+
+rf_status rf_dir_search(const rf_dir_search_input* input, rf_depth_sampler sample, void* context,
+  rf_dir_search_result* result)
+{
+  rf_vec3 unit_direction;
+  rf_vec3 P2;
+  rf_float2 tc;
+  rfk_camera camera;
+  int found;
+  rf_status status;
+  if (input == NULL || sample == NULL || result == NULL)
   {
-    return RF_OK; /* the bracket would reach past E */
+    return RF_ERR_NULL_ARGUMENT;
   }
-  far_end = rf_vec3_add(*P2, rf_vec3_scale(rf_vec3_sub(seg->E, seg->S), bracket));
-  rf_dir_texcoord(seg, rf_dir_alpha(seg, far_end.z), far_tc);
-  far_stored = sample(context, far_tc);
-  near_gap = sample(context, tc) - (-P2->z);
-  far_gap = far_stored - (-far_end.z);
-  /* A bracket across the surface has the gap change sign; an empty far texel (a silhouette,
-   * not a crossing) gives no usable slope. */
-  if (!(far_stored > 0.0) || !(near_gap > 0.0) || !(far_gap < 0.0))
+  if (!rf_vec3_is_finite(input->P1) || !rf_vec3_is_finite(input->T1) ||
+    !all_finite(input->projection, 16) || !isfinite(input->depth_min) ||
+    !isfinite(input->depth_max))
   {
-    return RF_OK;
+    return RF_ERR_NOT_FINITE;
   }
-  t = near_gap / (near_gap - far_gap);
-  refined = rf_vec3_add(*P2, rf_vec3_scale(rf_vec3_sub(far_end, *P2), t));
-  rf_dir_texcoord(seg, rf_dir_alpha(seg, refined.z), refined_tc);
-  if (!(sample(context, refined_tc) > 0.0))
+  status = rf_validate_cbs_steps(input->steps);
+  if (status != RF_OK)
   {
-    return RF_OK;
+    return status;
   }
-  *P2 = refined;
-  tc[0] = refined_tc[0];
-  tc[1] = refined_tc[1];
-  *beta += t * bracket;
+  if (input->viewport[0] < 1 || input->viewport[1] < 1)
+  {
+    return RF_ERR_EMPTY_RANGE;
+  }
+  unit_direction = rf_vec3_normalize(input->T1);
+  if (!(rf_vec3_length(unit_direction) > 0.0))
+  {
+    return RF_ERR_DEGENERATE_DIRECTION;
+  }
+  camera = rfk_make_camera(matrix_of(input->projection),
+    rf_make2((double)input->viewport[0], (double)input->viewport[1]), input->parallel != 0);
+  found = rfk_dir_search(input->P1, unit_direction, rf_make2(input->depth_min, input->depth_max),
+    camera,
+    rfk_make_search_settings(input->steps, input->adaptive != 0, input->secant != 0),
+    depth_map_of(sample, context), &P2, &tc);
+  if (!rf_vec3_is_finite(P2) || !isfinite(tc.x) || !isfinite(tc.y))
+  {
+    return RF_ERR_NOT_FINITE;
+  }
+  result->P2 = P2;
+  result->tc[0] = tc.x;
+  result->tc[1] = tc.y;
+  result->found = found;
   return RF_OK;
 }

@@ -1,6 +1,6 @@
 /* The built-in environment: a sky/ground/studio pattern made in code, so the demo, the tests
- * and the reference tracer need no image file. The GLSL twin is rfBuiltinEnvironment in
- * shaders/rfEnvironment.glsl: keep the two formulas identical. */
+ * and the reference tracer need no image file. The formula is rfk_builtin_environment of
+ * kernel/rf_kernel_environment.h, which the shaders compile too. */
 #ifndef RF_ENVIRONMENT_H
 #define RF_ENVIRONMENT_H
 

@@ -4,11 +4,14 @@
  * checked against its documented contract, and a violation aborts (a crash is a finding):
  *  - statuses are the documented ones, and on error the outputs are left alone;
  *  - on success directions are finite and unit, reflectances in [0, 1], angles in range;
- *  - the search stays on its segment (beta in [0, 1]) and gives finite points.
+ *  - the search stays on its segment (beta in [0, 1]) and gives finite points; the shader's
+ *    whole search (rf_dir_search) gives finite points, and P1 itself when nothing was captured;
+ *  - ISR's estimate is finite on success.
  * Built with clang -fsanitize=fuzzer,address,undefined (tests/fuzz/CMakeLists.txt); the same
  * file without libFuzzer replays the corpus (fuzz_replay.c). */
 #include "rf_dir_search.h"
 #include "rf_environment.h"
+#include "rf_isr.h"
 #include "rf_optics.h"
 #include "rf_validate.h"
 
@@ -176,6 +179,44 @@ static double sample_from_data(void* context, const double tc[2])
   return depth;
 }
 
+/* The shader's search on the same inputs; its settings from bits of the step count, so that
+ * no byte is taken (the depth map is the rest of the input). */
+static void check_shader_search(fuzz_input* in, rf_vec3 P1, rf_vec3 T1, double depth_min,
+  double depth_max, const double projection[16], int steps)
+{
+  rf_dir_search_input input;
+  rf_dir_search_result result;
+  rf_dir_search_result untouched;
+  rf_status s;
+  memset(&input, 0, sizeof(input));
+  input.P1 = P1;
+  input.T1 = T1;
+  input.depth_min = depth_min;
+  input.depth_max = depth_max;
+  memcpy(input.projection, projection, sizeof(input.projection));
+  input.viewport[0] = 64;
+  input.viewport[1] = 48;
+  input.steps = steps;
+  input.adaptive = steps & 1;
+  input.secant = (steps >> 1) & 1;
+  input.parallel = (steps >> 2) & 1;
+  memset(&untouched, 0x5a, sizeof(untouched));
+  result = untouched;
+  s = rf_dir_search(&input, sample_from_data, in, &result);
+  REQUIRE(is_status(s) && s != RF_TIR && s != RF_ERR_NULL_ARGUMENT);
+  if (s != RF_OK)
+  {
+    REQUIRE(memcmp(&result, &untouched, sizeof(result)) == 0);
+    REQUIRE(rf_validate_cbs_steps(steps) == RF_OK || s == RF_ERR_STEPS_OUT_OF_RANGE ||
+      s == RF_ERR_NOT_FINITE);
+    return;
+  }
+  REQUIRE(rf_validate_cbs_steps(steps) == RF_OK);
+  REQUIRE(rf_vec3_is_finite(result.P2) && isfinite(result.tc[0]) && isfinite(result.tc[1]));
+  REQUIRE(result.found == 1 || (result.found == 0 && memcmp(&result.P2, &P1, sizeof(P1)) == 0));
+  REQUIRE(result.found == 1 || !(depth_min <= depth_max));
+}
+
 static void check_search(fuzz_input* in)
 {
   const rf_vec3 P1 = take_vec3(in);
@@ -196,6 +237,7 @@ static void check_search(fuzz_input* in)
       projection[i] = take_double(in);
     }
   }
+  check_shader_search(in, P1, T1, depth_min, depth_max, projection, steps);
   memset(&untouched, 0x5a, sizeof(untouched));
   seg = untouched;
   s = rf_dir_segment_init(P1, T1, depth_min, depth_max, projection, &seg);
@@ -259,6 +301,17 @@ static void check_misc(fuzz_input* in)
   REQUIRE(rf_status_message((rf_status)steps) != NULL);
   REQUIRE(rf_vec3_length(u) == 0.0 || is_unit(u));
   REQUIRE(rf_vec3_length(u) > 0.0 || !rf_vec3_is_finite(v) || (v.x == 0.0 && v.y == 0.0 && v.z == 0.0));
+  {
+    /* ISR's estimate on values already taken. */
+    const rf_vec3 w = rf_vec3_make(direction[0], direction[1], direction[2]);
+    double d = 9.0;
+    rf_status s = rf_isr_distance(absorption[0], absorption[1], v, w, u, ior, &d);
+    REQUIRE(is_status(s) && s != RF_TIR && s != RF_ERR_NULL_ARGUMENT);
+    REQUIRE(s == RF_OK ? isfinite(d) : d == 9.0);
+    s = rf_isr_view_distance(absorption[2], w, v, &d);
+    REQUIRE(is_status(s) && s != RF_TIR && s != RF_ERR_NULL_ARGUMENT);
+    REQUIRE(s == RF_OK ? isfinite(d) : 1);
+  }
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)

@@ -1,5 +1,6 @@
 /* Unit tests of rf_dir_search (paper sections 3.2-3.3) against numbers
- * worked out by hand. */
+ * worked out by hand: the segment and the paper's search (rf_dir_segment_init, rf_dir_cbs),
+ * and the whole search as the shader runs it (rf_dir_search, the same kernel source). */
 #include "rf_dir_search.h"
 
 #include "rf_test.h"
@@ -352,6 +353,224 @@ static void test_secant_refinement(void)
   CHECK(rf_dir_secant_refine(NULL, 3, sample_disc, NULL, NULL, NULL, NULL) == RF_ERR_NULL_ARGUMENT);
 }
 
+
+/* ---- rf_dir_search: the whole exit search the shader runs (rfk_dir_search) ---- */
+
+static rf_dir_search_input hand_search_input(int steps)
+{
+  rf_dir_search_input in;
+  memset(&in, 0, sizeof(in));
+  in.P1 = hand_P1;
+  in.T1 = hand_T1;
+  in.depth_min = hand_depth_min;
+  in.depth_max = hand_depth_max;
+  make_projection(in.projection);
+  in.viewport[0] = 64;
+  in.viewport[1] = 64;
+  in.steps = steps;
+  return in;
+}
+
+static double sample_constant(void* context, const double tc[2])
+{
+  (void)tc;
+  return *(const double*)context;
+}
+
+/* Where S lies on the silhouette and P1 before Zmin, the shader's search is the paper's:
+ * the same P2 as rf_dir_cbs on the eq. 3-4 segment, for every step count. */
+static void test_search_matches_the_paper_inside(void)
+{
+  const rf_dir_segment seg = hand_segment();
+  int c;
+  for (c = 0; c <= 10; ++c)
+  {
+    disc_depth_map map = { { 0.5, 0.5 }, 0.4, 5.3, 0, { 0.0, 0.0 } };
+    const rf_dir_search_input in = hand_search_input(c);
+    rf_dir_search_result out;
+    rf_vec3 P2;
+    double tc[2];
+    double beta;
+    CHECK(rf_dir_cbs(&seg, c, sample_disc, &map, &P2, tc, &beta) == RF_OK);
+    CHECK(rf_dir_search(&in, sample_disc, &map, &out) == RF_OK);
+    CHECK(out.found == 1);
+    CHECK_NEAR(out.P2.x, P2.x, 1e-12);
+    CHECK_NEAR(out.P2.y, P2.y, 1e-12);
+    CHECK_NEAR(out.P2.z, P2.z, 1e-12);
+    CHECK_NEAR(out.tc[0], tc[0], 1e-12);
+    CHECK_NEAR(out.tc[1], tc[1], 1e-12);
+  }
+}
+
+/* T1 toward the camera: rf_dir_segment_init has no segment (S and E lie behind P1), the shader
+ * searches sideways from P1 up to the frustum. P1 = (0, 0, -2), T1 = (0.6, 0, 0.8): the side
+ * plane x = -z is reached at 0.6 t = 2 - 0.8 t, t = 1.4286, the near plane -z = 1 first, at
+ * t = 1.25, E = (0.75, 0, -1). Behind a back surface at depth 10 everywhere every candidate
+ * advances: after c steps P2 = P1 + (1 - 2^-c) 1.25 T1. */
+static void test_search_toward_the_camera(void)
+{
+  double depth = 10.0;
+  double projection[16];
+  rf_dir_segment seg;
+  int c;
+  make_projection(projection);
+  CHECK(rf_dir_segment_init(rf_vec3_make(0.0, 0.0, -2.0), rf_vec3_make(0.6, 0.0, 0.8), 4.0, 6.0,
+          projection, &seg) == RF_ERR_DEGENERATE_DIRECTION);
+  for (c = 0; c <= 8; ++c)
+  {
+    rf_dir_search_input in = hand_search_input(c);
+    rf_dir_search_result out;
+    const double t = (1.0 - ldexp(1.0, -c)) * 1.25;
+    in.P1 = rf_vec3_make(0.0, 0.0, -2.0);
+    in.T1 = rf_vec3_make(0.6, 0.0, 0.8);
+    in.secant = 1; /* no effect here: the far end of the bracket is never behind the surface */
+    CHECK(rf_dir_search(&in, sample_constant, &depth, &out) == RF_OK);
+    CHECK(out.found == 1);
+    CHECK_NEAR(out.P2.x, 0.6 * t, 1e-12);
+    CHECK_NEAR(out.P2.y, 0.0, 1e-12);
+    CHECK_NEAR(out.P2.z, -2.0 + 0.8 * t, 1e-12);
+  }
+}
+
+/* Zmin = Zmax (a flat back facing the camera): rf_dir_segment_init refuses the empty range.
+ * The shader's segment shrinks to the point S = (1.9, 1.15, -5) on the plane (hand ray at depth
+ * 5), which is no start "before" E, so the search runs from P1 to that point instead: after 5
+ * steps P2 = P1 + (31/32)(S - P1) = (1.84375, 1.1078125, -4.90625), in front of the plane. */
+static void test_search_flat_range(void)
+{
+  disc_depth_map map = { { 0.5, 0.5 }, 0.4, 5.0, 0, { 0.0, 0.0 } };
+  rf_dir_search_input in = hand_search_input(5);
+  rf_dir_search_result out;
+  double projection[16];
+  double tc[2];
+  rf_dir_segment seg;
+  make_projection(projection);
+  CHECK(rf_dir_segment_init(hand_P1, hand_T1, 5.0, 5.0, projection, &seg) == RF_ERR_EMPTY_RANGE);
+  in.depth_min = 5.0;
+  in.depth_max = 5.0;
+  in.secant = 1; /* the far end lies on the plane, not behind it: no secant step */
+  CHECK(rf_dir_search(&in, sample_disc, &map, &out) == RF_OK);
+  CHECK(out.found == 1);
+  CHECK_NEAR(out.P2.x, 1.84375, 1e-12);
+  CHECK_NEAR(out.P2.y, 1.1078125, 1e-12);
+  CHECK_NEAR(out.P2.z, -4.90625, 1e-12);
+  hand_texcoord(out.P2, tc);
+  CHECK_NEAR(out.tc[0], tc[0], 1e-12);
+  CHECK_NEAR(out.tc[1], tc[1], 1e-12);
+}
+
+/* S outside the silhouette: the back surface covers a disc of radius 0.1 about P1's own texel
+ * (0.525, 0.45), not S's (0.6625, 0.5875), 0.194 away. The paper's search from S cannot move
+ * (every candidate's texel is empty) and ends on an empty texel; the shader's starts at P1 and
+ * ends on the silhouette, in front of the back surface. */
+static void test_search_from_P1_when_S_is_outside(void)
+{
+  const rf_dir_segment seg = hand_segment();
+  int moved = 0;
+  int c;
+  for (c = 1; c <= 8; ++c)
+  {
+    disc_depth_map map = { { 0.525, 0.45 }, 0.1, 5.9, 0, { 0.0, 0.0 } };
+    const rf_dir_search_input in = hand_search_input(c);
+    rf_dir_search_result out;
+    rf_vec3 P2;
+    double tc[2];
+    double beta;
+    rf_vec3 along;
+    CHECK(rf_dir_cbs(&seg, c, sample_disc, &map, &P2, tc, &beta) == RF_OK);
+    CHECK(!inside_disc(&map, tc));
+    CHECK(rf_dir_search(&in, sample_disc, &map, &out) == RF_OK);
+    CHECK(inside_disc(&map, out.tc));
+    CHECK(-out.P2.z < 5.9);
+    /* on the ray, ahead of P1, and off it once there are steps to take */
+    along = rf_vec3_sub(out.P2, hand_P1);
+    CHECK_NEAR(rf_vec3_length(rf_vec3_cross(along, hand_T1)), 0.0, 1e-12);
+    CHECK(rf_vec3_dot(along, hand_T1) >= 0.0);
+    moved += rf_vec3_dot(along, hand_T1) > 0.0 ? 1 : 0;
+  }
+  /* the first candidates (half and a quarter of the way) lie outside the disc; finer ones
+   * find the part of the ray inside it */
+  CHECK(moved >= 5);
+}
+
+/* 0 steps: the shader takes no secant step (rf_dir_secant_refine neither, now), so P2 = S. */
+static void test_search_zero_steps(void)
+{
+  const rf_dir_segment seg = hand_segment();
+  disc_depth_map map = { { 0.5, 0.5 }, 0.4, 5.0, 0, { 0.0, 0.0 } };
+  rf_dir_search_input in = hand_search_input(0);
+  rf_dir_search_result out;
+  rf_vec3 P2 = seg.S;
+  double tc[2] = { seg.ts[0], seg.ts[1] };
+  double beta = 0.0;
+  in.secant = 1;
+  CHECK(rf_dir_search(&in, sample_disc, &map, &out) == RF_OK);
+  CHECK(out.P2.x == seg.S.x && out.P2.y == seg.S.y && out.P2.z == seg.S.z);
+  CHECK(rf_dir_secant_refine(&seg, 0, sample_disc, &map, &P2, tc, &beta) == RF_OK);
+  CHECK(beta == 0.0 && P2.z == seg.S.z);
+  /* with one step the secant does move it: a plane at depth 4.6 lies between S (4) and the
+   * rejected midpoint (5), and the secant finds it exactly */
+  in.steps = 1;
+  map.depth = 4.6;
+  CHECK(rf_dir_search(&in, sample_disc, &map, &out) == RF_OK);
+  CHECK_NEAR(out.P2.z, -4.6, 1e-12);
+}
+
+/* The adaptive bound: the hand segment spans t'_e - t'_s = (0.0458, 0.0458), 4.15 texels of a
+ * 64 x 64 map, so ceil(log2(2 x 4.15)) = 4 steps bring the bracket under half a texel. */
+static void test_search_adaptive_bound(void)
+{
+  disc_depth_map map = { { 0.5, 0.5 }, 0.4, 5.3, 0, { 0.0, 0.0 } };
+  rf_dir_search_input adaptive = hand_search_input(8);
+  rf_dir_search_input four = hand_search_input(4);
+  rf_dir_search_input eight = hand_search_input(8);
+  rf_dir_search_result a;
+  rf_dir_search_result b;
+  rf_dir_search_result c;
+  adaptive.adaptive = 1;
+  CHECK(rf_dir_search(&adaptive, sample_disc, &map, &a) == RF_OK);
+  CHECK(rf_dir_search(&four, sample_disc, &map, &b) == RF_OK);
+  CHECK(rf_dir_search(&eight, sample_disc, &map, &c) == RF_OK);
+  CHECK(a.P2.z == b.P2.z);
+  CHECK(a.P2.z != c.P2.z);
+}
+
+static void test_search_errors(void)
+{
+  disc_depth_map map = { { 0.5, 0.5 }, 0.4, 5.0, 0, { 0.0, 0.0 } };
+  rf_dir_search_input in = hand_search_input(5);
+  rf_dir_search_result out;
+  rf_dir_search_result untouched;
+  memset(&out, 0x5a, sizeof(out));
+  untouched = out;
+  CHECK(rf_dir_search(NULL, sample_disc, &map, &out) == RF_ERR_NULL_ARGUMENT);
+  CHECK(rf_dir_search(&in, NULL, &map, &out) == RF_ERR_NULL_ARGUMENT);
+  CHECK(rf_dir_search(&in, sample_disc, &map, NULL) == RF_ERR_NULL_ARGUMENT);
+  in.steps = RF_CBS_MAX_STEPS + 1;
+  CHECK(rf_dir_search(&in, sample_disc, &map, &out) == RF_ERR_STEPS_OUT_OF_RANGE);
+  in = hand_search_input(5);
+  in.T1 = rf_vec3_make(0.0, 0.0, 0.0);
+  CHECK(rf_dir_search(&in, sample_disc, &map, &out) == RF_ERR_DEGENERATE_DIRECTION);
+  in = hand_search_input(5);
+  in.depth_max = NAN;
+  CHECK(rf_dir_search(&in, sample_disc, &map, &out) == RF_ERR_NOT_FINITE);
+  in = hand_search_input(5);
+  in.projection[0] = INFINITY;
+  CHECK(rf_dir_search(&in, sample_disc, &map, &out) == RF_ERR_NOT_FINITE);
+  in = hand_search_input(5);
+  in.viewport[1] = 0;
+  CHECK(rf_dir_search(&in, sample_disc, &map, &out) == RF_ERR_EMPTY_RANGE);
+  CHECK(memcmp(&out, &untouched, sizeof(out)) == 0);
+  CHECK(map.calls == 0);
+  /* Nothing captured (the reduction's empty answer, Zmin > Zmax): not found, P2 = P1. */
+  in = hand_search_input(5);
+  in.depth_min = 3e38;
+  in.depth_max = 0.0;
+  CHECK(rf_dir_search(&in, sample_disc, &map, &out) == RF_OK);
+  CHECK(out.found == 0);
+  CHECK(out.P2.x == hand_P1.x && out.P2.y == hand_P1.y && out.P2.z == hand_P1.z);
+}
+
 int main(void)
 {
   test_segment_constants();
@@ -361,5 +580,12 @@ int main(void)
   test_secant_refinement();
   test_zero_steps();
   test_degenerate_inputs();
+  test_search_matches_the_paper_inside();
+  test_search_toward_the_camera();
+  test_search_flat_range();
+  test_search_from_P1_when_S_is_outside();
+  test_search_zero_steps();
+  test_search_adaptive_bound();
+  test_search_errors();
   return RF_TEST_SUMMARY();
 }

@@ -132,6 +132,19 @@ static void test_refract_errors(void)
   CHECK(rf_refract(down, zero, 1.5, &t) == RF_ERR_DEGENERATE_DIRECTION);
 }
 
+/* Grazing so closely that the tangential part is 1e-160 long (its square is subnormal): under
+ * the clamp policy the ray leaves along that part, still a unit vector (found by fuzzing: a
+ * division by the inexact length gave |T| = 1.0000036). */
+static void test_clamp_with_a_tiny_tangential_part(void)
+{
+  const rf_vec3 incident = rf_vec3_make(-1.0, 2.2250738585072014e-308, 0.0);
+  const rf_vec3 normal = rf_vec3_make(5.5418492252184426e+156, -0.0013256275272755017, 1e-6);
+  rf_vec3 t;
+  CHECK(rf_refract_clamped(incident, normal, 5.5418492252184426e+156, &t) == RF_TIR);
+  CHECK_NEAR(rf_vec3_length(t), 1.0, 1e-12);
+  CHECK_NEAR(rf_vec3_dot(t, rf_vec3_normalize(normal)), 0.0, 1e-12);
+}
+
 /* Fresnel reflectances written out from the Fresnel equations with the
  * indices themselves, independent of the eta form used in rf_optics.c. */
 static double hand_rs(double n1, double n2, double theta_i)
@@ -262,6 +275,7 @@ int main(void)
   test_snell_30_degrees();
   test_critical_angle();
   test_refract_errors();
+  test_clamp_with_a_tiny_tangential_part();
   test_fresnel_closed_forms();
   test_fresnel_tir_and_sweep();
   test_schlick();

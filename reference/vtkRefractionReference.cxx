@@ -129,18 +129,18 @@ bool ImageToRgb(vtkImageData* image, bool srgb, std::vector<float>& rgb, int siz
   return true;
 }
 
-// The image on a texture's input connection k, brought up to date.
+// The image on a texture's input port k (a cube map has one port per face), up to date.
 vtkImageData* TextureInput(vtkTexture* texture, int k)
 {
-  if (texture->GetNumberOfInputConnections(0) <= k)
+  if (texture->GetNumberOfInputPorts() <= k || texture->GetNumberOfInputConnections(k) < 1)
   {
     return nullptr;
   }
-  if (vtkAlgorithm* producer = texture->GetInputAlgorithm(0, k))
+  if (vtkAlgorithm* producer = texture->GetInputAlgorithm(k, 0))
   {
     producer->Update();
   }
-  return vtkImageData::SafeDownCast(texture->GetInputDataObject(0, k));
+  return vtkImageData::SafeDownCast(texture->GetInputDataObject(k, 0));
 }
 
 // Fills env with what the pass samples (see the class comment); false with a message in

@@ -29,12 +29,15 @@
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
 #include <vtkDataArray.h>
+#include <vtkEquirectangularToCubeMapTexture.h>
 #include <vtkFlyingEdges3D.h>
+#include <vtkHDRReader.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkOpenGLRenderTimer.h>
+#include <vtkOpenGLTexture.h>
 #include <vtkParametricFunctionSource.h>
 #include <vtkParametricTorus.h>
 #include <vtkPNGWriter.h>
@@ -67,6 +70,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -86,6 +90,7 @@ struct Options
   bool X11 = false;
   bool Dump = false;
   std::string FromCsv;
+  std::string Environment = "builtin";
   std::string Bunny = "/usr/share/glmark2/models/bunny.obj";
 };
 
@@ -188,6 +193,10 @@ bool Parse(int argc, char* argv[], Options& o)
     "Seed of the shuffled row order (default 1).");
   args.AddArgument("--supersample", Args::SPACE_ARGUMENT, &supersample,
     "Rays per pixel side of the anti-aliased references, 2..16 (default 4: 16 rays).");
+  args.AddArgument("--environment", Args::SPACE_ARGUMENT, &o.Environment,
+    "builtin (the pass's built-in sky, default), studio (an HDR lat-long image made in "
+    "code: dim walls, bright soft boxes up to 8), or a lat-long .hdr file; the last two go "
+    "through vtkEquirectangularToCubeMapTexture as the renderer's environment.");
   args.AddArgument("--bunny", Args::SPACE_ARGUMENT, &o.Bunny,
     "The Stanford bunny OBJ (default /usr/share/glmark2/models/bunny.obj).");
   args.AddArgument("--from-csv", Args::SPACE_ARGUMENT, &o.FromCsv,
@@ -256,6 +265,13 @@ bool Parse(int argc, char* argv[], Options& o)
   {
     std::fprintf(stderr, "--frames (1..10000), --repeats (3..100), --seed (>= 0) or "
                          "--supersample (2..16): not a number in range\n");
+    return false;
+  }
+  if (o.Environment != "builtin" && o.Environment != "studio" &&
+    !vtksys::SystemTools::FileExists(o.Environment, true))
+  {
+    std::fprintf(stderr, "--environment: '%s' is neither builtin, studio nor a file\n",
+      o.Environment.c_str());
     return false;
   }
   if (o.Sizes.empty() || o.Meshes.empty())
@@ -985,6 +1001,107 @@ void WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
   writer->SetFileName(path.c_str());
   writer->Write();
 }
+// A studio made in code, as a float lat-long image (VTK's layout: u = atan2(z, x), v =
+// asin(y), row 0 at the bottom): dim walls with a floor grid, a ceiling gradient and three
+// soft boxes far brighter than 1, so that the picture has edges to refract and the values a
+// real HDR environment has.
+vtkSmartPointer<vtkImageData> StudioEnvironment(int width, int height)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_FLOAT, 3);
+  auto* texels = static_cast<float*>(image->GetScalarPointer());
+  const double lights[3][7] = { // direction, cosine of the half angle, brightness
+    { 0.6, 0.6, 0.5, 0.97, 8.0, 7.6, 7.0 }, { -0.7, 0.35, -0.6, 0.985, 2.5, 3.5, 6.0 },
+    { 0.0, 0.9, -0.4, 0.95, 4.0, 4.0, 4.0 } };
+  for (int j = 0; j < height; ++j)
+  {
+    for (int i = 0; i < width; ++i)
+    {
+      const double theta = ((i + 0.5) / width - 0.5) / 0.1591;
+      const double phi = ((j + 0.5) / height - 0.5) / 0.3183;
+      const double d[3] = { std::cos(phi) * std::cos(theta), std::sin(phi),
+        std::cos(phi) * std::sin(theta) };
+      double rgb[3];
+      if (d[1] < 0.0)
+      {
+        // Floor: a grid on the plane y = -1.
+        const double x = d[0] / -d[1];
+        const double z = d[2] / -d[1];
+        const bool line = std::fabs(x - std::round(x)) < 0.04 || std::fabs(z - std::round(z)) < 0.04;
+        const double tone = line ? 0.9 : 0.18;
+        rgb[0] = tone;
+        rgb[1] = tone * 0.95;
+        rgb[2] = tone * 0.85;
+      }
+      else
+      {
+        const double t = d[1];
+        rgb[0] = 0.35 * (1.0 - t) + 0.10 * t;
+        rgb[1] = 0.30 * (1.0 - t) + 0.14 * t;
+        rgb[2] = 0.25 * (1.0 - t) + 0.30 * t;
+      }
+      for (const auto& light : lights)
+      {
+        const double length = std::sqrt(light[0] * light[0] + light[1] * light[1] + light[2] * light[2]);
+        const double c = (d[0] * light[0] + d[1] * light[1] + d[2] * light[2]) / length;
+        if (c > light[3])
+        {
+          for (int k = 0; k < 3; ++k)
+            rgb[k] = light[4 + k];
+        }
+      }
+      for (int k = 0; k < 3; ++k)
+        texels[3 * (j * width + i) + k] = static_cast<float>(rgb[k]);
+    }
+  }
+  return image;
+}
+
+// The renderer's environment for --environment (nullptr: the pass's built-in one).
+// Smoke runs use a smaller image and cube map (the same code, a quarter of the work).
+vtkSmartPointer<vtkTexture> MakeEnvironment(
+  const std::string& name, bool smoke, std::string& description)
+{
+  if (name == "builtin")
+  {
+    description = "the pass's built-in environment";
+    return nullptr;
+  }
+  vtkSmartPointer<vtkImageData> image;
+  if (name == "studio")
+  {
+    const int width = smoke ? 256 : 1024;
+    image = StudioEnvironment(width, width / 2);
+    description = "studio (HDR lat-long " + std::to_string(width) + "x" +
+      std::to_string(width / 2) + " made in code)";
+  }
+  else
+  {
+    vtkNew<vtkHDRReader> reader;
+    if (!reader->CanReadFile(name.c_str()))
+    {
+      std::fprintf(stderr, "--environment: %s is not a Radiance .hdr file VTK can read\n",
+        name.c_str());
+      return nullptr;
+    }
+    reader->SetFileName(name.c_str());
+    reader->Update();
+    image = reader->GetOutput();
+    description = vtksys::SystemTools::GetFilenameName(name) + " (HDR lat-long)";
+  }
+  auto texture = vtkSmartPointer<vtkOpenGLTexture>::New();
+  texture->SetInputData(image);
+  texture->SetColorModeToDirectScalars(); // floats as they are, not through a lookup table
+  texture->InterpolateOn();
+  auto cube = vtkSmartPointer<vtkEquirectangularToCubeMapTexture>::New();
+  cube->SetInputTexture(texture);
+  cube->SetCubeMapSize(smoke ? 128 : 512);
+  description += " through vtkEquirectangularToCubeMapTexture (cube map " +
+    std::to_string(cube->GetCubeMapSize()) + ")";
+  return cube;
+}
+
 std::vector<Setting> Settings(const Options& o)
 {
   std::vector<Setting> settings;
@@ -1063,6 +1180,14 @@ void Show(vtkRenderWindow* window, vtkRenderer* renderer, const Scene& scene, in
   window->SetSize(size, size);
 }
 
+// The 1-minute load average (Linux), the first thing to look at when timings scatter.
+std::string LoadAverage()
+{
+  std::ifstream in("/proc/loadavg");
+  std::string value;
+  return in >> value ? value : std::string("unknown");
+}
+
 std::string Clock(double seconds)
 {
   char text[32];
@@ -1101,6 +1226,13 @@ int main(int argc, char* argv[])
   }
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
+  std::string environmentDescription;
+  vtkSmartPointer<vtkTexture> environment =
+    MakeEnvironment(options.Environment, options.Smoke, environmentDescription);
+  if (!environment && options.Environment != "builtin")
+  {
+    return 1;
+  }
   window->SetSize(options.Sizes.front(), options.Sizes.front());
   window->Render();
   std::string rendererName = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -1167,6 +1299,9 @@ int main(int argc, char* argv[])
     return 1;
   }
 
+  // Set before any timing: VTK converts the lat-long image into its cube map once, on the
+  // first frame that uses it, and the plain render does not sample it.
+  renderer->SetEnvironmentTexture(environment);
   vtkNew<vtkRefractionPass> pass;
   pass->SetGPUTiming(true);
   const std::vector<Setting> settings = Settings(options);
@@ -1268,6 +1403,7 @@ int main(int argc, char* argv[])
   };
   std::vector<Samples> samples(rows.size());
   const double timingStart = elapsed();
+  const std::string loadBefore = LoadAverage();
   for (size_t j = 0; j < jobs.size(); ++j)
   {
     Row& row = rows[jobs[j].first];
@@ -1326,13 +1462,18 @@ int main(int argc, char* argv[])
     }
     row.StageMs.resize(vtkRefractionPass::TIMED_STAGE_COUNT, -1.0);
   }
+  const std::string loadAfter = LoadAverage();
   renderer->RemoveAllViewProps();
   std::ostringstream run;
-  run << "Run: " << rows.size() << " rows x " << options.Repeats << " repeats (seed "
+  run << "Environment: " << environmentDescription << ". Run: " << rows.size() << " rows x " << options.Repeats << " repeats (seed "
       << options.Seed << "), " << options.Frames << " timed frames each, references "
       << ss << "x" << ss << " rays per pixel for `SS`; "
       << (options.Quick ? "--quick preset; " : options.Smoke ? "--smoke preset; " : "")
-      << "took " << Clock(elapsed()) << " (m:s).";
+      << "took " << Clock(elapsed()) << " (m:s). Machine load (1-minute load average) "
+      << loadBefore << " when the timing began and " << loadAfter << " when it ended, on "
+      << std::thread::hardware_concurrency() << " logical CPUs: a load "
+      << "above the CPU count means other programs shared the cores and every time is "
+      << "inflated by them; compare ratios, not milliseconds.";
   WriteCsv(options.Out + "/results.csv", rows, rendererName);
   WriteMarkdown(options.Out + "/results.md", rows, rendererName, windowPath, run.str());
   WritePareto(window, options.Out + "/pareto.png", rows);

@@ -10,6 +10,8 @@
 // 2. A constant cube map (IOR 1.5, two-interface and full, 3 x 3 samples per pixel): every
 //    pixel reads coverage * c + (1 - coverage) * background, the background the renderer's.
 // 3. Trace reports ProgressEvent from 0 to 1.
+// 4. Bad environments (an integer image, a 3D image, a frame whose up and right are
+//    parallel) make Trace return false with an error instead of tracing something else.
 // Needs X (xvfb-run -a).
 #include "rf_require.h"
 #include "vtkRefractionPass.h"
@@ -278,6 +280,33 @@ int main()
     RF_REQUIRE(progress.size() >= 3 && progress.front() == 0.0 && progress.back() == 1.0 &&
         std::is_sorted(progress.begin(), progress.end()),
       "progress events not 0 .. 1 in order");
+  }
+
+  // Bad environments: false, with an error event each.
+  {
+    vtkNew<vtkRefractionReference> reference;
+    int errors = 0;
+    vtkNew<vtkCallbackCommand> onError;
+    onError->SetClientData(&errors);
+    onError->SetCallback(
+      [](vtkObject*, unsigned long, void* client, void*) { ++*static_cast<int*>(client); });
+    reference->AddObserver(vtkCommand::ErrorEvent, onError);
+    vtkNew<vtkImageData> integers;
+    integers->SetDimensions(8, 4, 1);
+    integers->AllocateScalars(VTK_INT, 3);
+    reference->SetEnvironmentImage(integers);
+    RF_REQUIRE(!reference->Trace(renderer, 32, 32), "an integer environment image was traced");
+    vtkNew<vtkImageData> volume;
+    volume->SetDimensions(8, 4, 2);
+    volume->AllocateScalars(VTK_FLOAT, 3);
+    reference->SetEnvironmentImage(volume);
+    RF_REQUIRE(!reference->Trace(renderer, 32, 32), "a 3D environment image was traced");
+    reference->SetEnvironmentImage(nullptr);
+    renderer->SetEnvironmentRight(0.0, 0.0, 2.0); // parallel to EnvironmentUp (0, 0, 1)
+    RF_REQUIRE(!reference->Trace(renderer, 32, 32), "a degenerate environment frame was used");
+    renderer->SetEnvironmentRight(1.0, 0.0, 0.0);
+    RF_REQUIRE(errors == 3, "expected 3 errors, saw %d", errors);
+    RF_REQUIRE(reference->Trace(renderer, 32, 32), "a good environment is refused after bad ones");
   }
   return EXIT_SUCCESS;
 }

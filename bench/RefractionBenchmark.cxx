@@ -954,6 +954,7 @@ void WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
     chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("frame time / plain VTK (median of repeats)");
     chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE against the supersampled full reference");
     chart->SetShowLegend(m == 0);
+    double largest[2] = { 0.0, 0.0 }; // x, y over every plotted point
     for (int family = 0; family < 8; ++family)
     {
       vtkNew<vtkTable> table;
@@ -989,6 +990,19 @@ void WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
       plot->SetInputData(table, 0, 1);
       plot->SetColor(colours[family][0], colours[family][1], colours[family][2], 255);
       plot->SetWidth(2.0);
+      for (const auto& point : points)
+      {
+        largest[0] = std::max(largest[0], point.first);
+        largest[1] = std::max(largest[1], point.second);
+      }
+    }
+    // From zero with a margin, so that a point is never drawn on the frame (VTK's automatic
+    // range puts the extreme points on it).
+    for (int a = 0; a < 2; ++a)
+    {
+      vtkAxis* axis = chart->GetAxis(a == 0 ? vtkAxis::BOTTOM : vtkAxis::LEFT);
+      axis->SetBehavior(vtkAxis::FIXED);
+      axis->SetRange(0.0, largest[a] > 0.0 ? 1.1 * largest[a] : 1.0);
     }
   }
   view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);

@@ -1,10 +1,14 @@
 // Error against run time: every method and setting on every mesh and resolution, timed
 // against a plain VTK render of the same mesh in the same run, and compared with the Embree
-// reference (two-interface: the image-space approximation's own error; full: what a user
-// sees as wrong). Writes results.csv, results.md and pareto.png into --out.
+// reference: two-interface (the image-space approximation's own error), full (what a user
+// sees as wrong) and the full reference supersampled N x N per pixel (the anti-aliased
+// truth a camera sees). Writes results.csv, results.md and pareto.png into --out.
 //
-//   RefractionBenchmark [--out DIR] [--sizes 256,512,1024] [--meshes sphere,torus,isosurface,bunny]
-//                       [--frames N] [--smoke] [--x11] [--bunny PATH]
+// Timing that can be believed: each row (one setting on one mesh at one size) is timed
+// together with its own plain render right after it, every row is repeated (--repeats, at
+// least 3) and all repeats run in one shuffled order (--seed), so slow phases of the machine
+// spread over all rows instead of falling on whichever ran first; the report gives the
+// median and the min/max over the repeats. `--help` lists the options.
 //
 // Rendering goes through EGL (no X server) unless --x11 is given or EGL is not available.
 #include "rf_metrics.h"
@@ -16,19 +20,24 @@
 
 #include <vtkActor.h>
 #include <vtkAxis.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkChartLegend.h>
 #include <vtkChartMatrix.h>
 #include <vtkChartXY.h>
+#include <vtkCommand.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
 #include <vtkDataArray.h>
+#include <vtkEquirectangularToCubeMapTexture.h>
 #include <vtkFlyingEdges3D.h>
+#include <vtkHDRReader.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkOpenGLRenderTimer.h>
+#include <vtkOpenGLTexture.h>
 #include <vtkParametricFunctionSource.h>
 #include <vtkParametricTorus.h>
 #include <vtkPNGWriter.h>
@@ -47,16 +56,22 @@
 #include <vtkVector.h>
 #include <vtkWindowToImageFilter.h>
 #include <vtk_glew.h>
+#include <vtksys/CommandLineArguments.hxx>
+#include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <map>
+#include <random>
 #include <sstream>
 #include <string>
-#include <sys/stat.h>
+#include <thread>
+#include <unistd.h>
 #include <vector>
 
 namespace
@@ -67,16 +82,21 @@ struct Options
   std::vector<int> Sizes{ 256, 512, 1024 };
   std::vector<std::string> Meshes{ "sphere", "torus", "isosurface", "bunny" };
   int Frames = 30;
+  int Repeats = 3;
+  int Seed = 1;
+  int Supersample = 4;
   bool Smoke = false;
+  bool Quick = false;
   bool X11 = false;
   bool Dump = false;
   std::string FromCsv;
+  std::string Environment = "builtin";
   std::string Bunny = "/usr/share/glmark2/models/bunny.obj";
 };
 
 struct Setting
 {
-  std::string Method; // SIR, DIR, ISR, SSP
+  std::string Method; // none (the pass without glass), SIR, DIR, ISR, SSP
   int Steps = 5;
   bool Bounds = false;
   bool Adaptive = false;
@@ -95,19 +115,33 @@ struct Setting
   }
 };
 
+// Error of one picture against one reference, on glass pixels, split by TIR.
+struct Errors
+{
+  double Psnr = -1, Rmse = -1, Ssim = -1, PsnrTir = -1, PsnrRest = -1;
+};
+
+// Medians and extremes over the repeats of one row.
+struct Spread
+{
+  double Median = -1, Min = -1, Max = -1;
+};
+
 struct Row
 {
   std::string Mesh;
   vtkIdType Triangles = 0;
   int Size = 0;
   Setting Config;
-  double CpuMs = 0, GpuFrameMs = -1, GpuBackMs = -1, GpuRangeMs = -1, GpuFrontMs = -1;
-  double PlainCpuMs = 0, PlainGpuMs = -1, PrecomputeMs = 0;
-  double RefTwoMs = 0, RefFullMs = 0, BytesPerPixel = 0;
-  double Psnr2 = 0, Rmse2 = 0, Ssim2 = 0, PsnrF = 0, RmseF = 0, SsimF = 0;
+  int Repeats = 0;
+  Spread CpuMs, PlainCpuMs, Ratio;
+  double GpuFrameMs = -1, PlainGpuMs = -1;
+  std::vector<double> StageMs; // medians, one per vtkRefractionPass timed stage
+  double PrecomputeMs = 0, RefTwoMs = 0, RefFullMs = 0, RefFullSSMs = 0, BytesPerPixel = 0;
+  Errors Two, Full, TwoSS, FullSS;
   double AngMean = 0, AngP95 = 0, AngMax = 0, P2Mean = 0, P2Max = 0, TirShare = 0,
          RefTirShare = 0;
-  long Pixels = 0;
+  long Pixels = 0, TirPixels = 0;
 };
 
 std::vector<std::string> Split(const std::string& text)
@@ -125,66 +159,127 @@ std::vector<std::string> Split(const std::string& text)
   return parts;
 }
 
+// A whole decimal number in [lo, hi], or false.
+bool ParseInt(const std::string& text, int lo, int hi, int& value)
+{
+  char* end = nullptr;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || v < lo || v > hi)
+  {
+    return false;
+  }
+  value = static_cast<int>(v);
+  return true;
+}
+
 bool Parse(int argc, char* argv[], Options& o)
 {
-  for (int i = 1; i < argc; ++i)
+  std::string sizes, meshes, frames, repeats, seed, supersample;
+  bool help = false;
+  using Args = vtksys::CommandLineArguments;
+  Args args;
+  args.Initialize(argc, argv);
+  args.AddArgument("--out", Args::SPACE_ARGUMENT, &o.Out,
+    "Folder for results.csv, results.md, pareto.png (default bench/results/<host kind>).");
+  args.AddArgument("--sizes", Args::SPACE_ARGUMENT, &sizes,
+    "Window sizes in pixels, comma-separated, 8..4096 (default 256,512,1024).");
+  args.AddArgument("--meshes", Args::SPACE_ARGUMENT, &meshes,
+    "Meshes, comma-separated: sphere, torus, isosurface, bunny (default all four).");
+  args.AddArgument("--frames", Args::SPACE_ARGUMENT, &frames,
+    "Timed frames per repeat of a row, after 5 warm-up frames (default 30).");
+  args.AddArgument("--repeats", Args::SPACE_ARGUMENT, &repeats,
+    "Repeats of every row, in one shuffled order, 3..100 (default 3).");
+  args.AddArgument("--seed", Args::SPACE_ARGUMENT, &seed,
+    "Seed of the shuffled row order (default 1).");
+  args.AddArgument("--supersample", Args::SPACE_ARGUMENT, &supersample,
+    "Rays per pixel side of the anti-aliased references, 2..16 (default 4: 16 rays).");
+  args.AddArgument("--environment", Args::SPACE_ARGUMENT, &o.Environment,
+    "builtin (the pass's built-in sky, default), studio (an HDR lat-long image made in "
+    "code: dim walls, bright soft boxes up to 8), or a lat-long .hdr file; the last two go "
+    "through vtkEquirectangularToCubeMapTexture as the renderer's environment.");
+  args.AddArgument("--bunny", Args::SPACE_ARGUMENT, &o.Bunny,
+    "The Stanford bunny OBJ (default /usr/share/glmark2/models/bunny.obj).");
+  args.AddArgument("--from-csv", Args::SPACE_ARGUMENT, &o.FromCsv,
+    "Remake results.md and pareto.png from an earlier results.csv, without running.");
+  args.AddBooleanArgument("--quick", &o.Quick,
+    "The four meshes at 512x512: DIR (5 steps), SIR, each with its plain render, 3 repeats "
+    "(a few minutes).");
+  args.AddBooleanArgument("--smoke", &o.Smoke,
+    "64x64, sphere and torus, 5 frames, every method once: the ctest smoke run.");
+  args.AddBooleanArgument("--x11", &o.X11, "Render through an X window instead of EGL.");
+  args.AddBooleanArgument("--dump", &o.Dump, "Also write every picture and reference as PNG.");
+  args.AddBooleanArgument("--help", &help, "Print this help.");
+  if (!args.Parse())
   {
-    const std::string a = argv[i];
-    const bool v = i + 1 < argc;
-    if (a == "--out" && v)
-      o.Out = argv[++i];
-    else if (a == "--sizes" && v)
-    {
-      o.Sizes.clear();
-      for (const auto& s : Split(argv[++i]))
-        o.Sizes.push_back(std::atoi(s.c_str()));
-    }
-    else if (a == "--meshes" && v)
-      o.Meshes = Split(argv[++i]);
-    else if (a == "--frames" && v)
-      o.Frames = std::atoi(argv[++i]);
-    else if (a == "--bunny" && v)
-      o.Bunny = argv[++i];
-    else if (a == "--smoke")
-      o.Smoke = true;
-    else if (a == "--x11")
-      o.X11 = true;
-    else if (a == "--dump")
-      o.Dump = true;
-    else if (a == "--from-csv" && v)
-      o.FromCsv = argv[++i];
-    else
-    {
-      std::fprintf(stderr, "unknown or incomplete option %s\n", a.c_str());
-      return false;
-    }
+    std::fprintf(stderr, "RefractionBenchmark: bad command line (--help lists the options)\n");
+    return false;
+  }
+  if (help)
+  {
+    std::printf("RefractionBenchmark: error against run time of the refraction methods.\n\n%s",
+      args.GetHelp());
+    std::exit(0);
+  }
+  if (o.Quick)
+  {
+    o.Sizes = { 512 };
+    o.Meshes = { "sphere", "torus", "isosurface", "bunny" };
   }
   if (o.Smoke)
   {
     o.Sizes = { 64 };
     o.Meshes = { "sphere", "torus" };
     o.Frames = 5;
+    o.Supersample = 2;
   }
-  for (int s : o.Sizes)
+  if (!sizes.empty())
   {
-    if (s < 8 || s > 4096)
+    o.Sizes.clear();
+    for (const auto& text : Split(sizes))
     {
-      std::fprintf(stderr, "sizes must be 8..4096\n");
-      return false;
+      int size = 0;
+      if (!ParseInt(text, 8, 4096, size))
+      {
+        std::fprintf(stderr, "--sizes: '%s' is not a size in 8..4096\n", text.c_str());
+        return false;
+      }
+      o.Sizes.push_back(size);
     }
   }
-  return o.Frames >= 1;
-}
-
-void MakeDirectories(const std::string& path)
-{
-  for (size_t i = 1; i <= path.size(); ++i)
+  if (!meshes.empty())
   {
-    if (i == path.size() || path[i] == '/')
+    o.Meshes = Split(meshes);
+    for (const auto& name : o.Meshes)
     {
-      mkdir(path.substr(0, i).c_str(), 0755);
+      if (name != "sphere" && name != "torus" && name != "isosurface" && name != "bunny")
+      {
+        std::fprintf(stderr, "--meshes: unknown mesh '%s'\n", name.c_str());
+        return false;
+      }
     }
   }
+  if ((!frames.empty() && !ParseInt(frames, 1, 10000, o.Frames)) ||
+    (!repeats.empty() && !ParseInt(repeats, 3, 100, o.Repeats)) ||
+    (!seed.empty() && !ParseInt(seed, 0, 2147483647, o.Seed)) ||
+    (!supersample.empty() && !ParseInt(supersample, 2, 16, o.Supersample)))
+  {
+    std::fprintf(stderr, "--frames (1..10000), --repeats (3..100), --seed (>= 0) or "
+                         "--supersample (2..16): not a number in range\n");
+    return false;
+  }
+  if (o.Environment != "builtin" && o.Environment != "studio" &&
+    !vtksys::SystemTools::FileExists(o.Environment, true))
+  {
+    std::fprintf(stderr, "--environment: '%s' is neither builtin, studio nor a file\n",
+      o.Environment.c_str());
+    return false;
+  }
+  if (o.Sizes.empty() || o.Meshes.empty())
+  {
+    std::fprintf(stderr, "no sizes or no meshes to run\n");
+    return false;
+  }
+  return true;
 }
 
 std::string HostKind(const std::string& renderer)
@@ -268,62 +363,6 @@ vtkSmartPointer<vtkAlgorithm> MakeMesh(const std::string& name, const Options& o
   return distances;
 }
 
-double Median(std::vector<double> v)
-{
-  if (v.empty())
-  {
-    return -1.0;
-  }
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
-
-struct Timing
-{
-  double Cpu = 0, GpuFrame = -1, Back = -1, Range = -1, Front = -1;
-};
-
-Timing TimeFrames(vtkRenderWindow* window, vtkRefractionPass* pass, int frames)
-{
-  vtkNew<vtkTimerLog> clock;
-  vtkOpenGLRenderTimer frameTimer;
-  std::vector<double> cpu, gpu, back, range, front;
-  const bool gpuTimers = vtkOpenGLRenderTimer::IsSupported();
-  for (int i = 0; i < 5 + frames; ++i)
-  {
-    clock->StartTimer();
-    if (gpuTimers)
-    {
-      frameTimer.Reset();
-      frameTimer.Start();
-    }
-    window->Render();
-    if (gpuTimers)
-    {
-      frameTimer.Stop();
-    }
-    glFinish();
-    clock->StopTimer();
-    if (i < 5)
-    {
-      continue;
-    }
-    cpu.push_back(clock->GetElapsedTime() * 1e3);
-    if (gpuTimers && frameTimer.Ready())
-    {
-      gpu.push_back(frameTimer.GetElapsedMilliseconds());
-    }
-    if (pass && pass->GetGPUTiming())
-    {
-      back.push_back(pass->GetStageMilliseconds(vtkRefractionPass::TIMED_BACK_CAPTURE));
-      range.push_back(pass->GetStageMilliseconds(vtkRefractionPass::TIMED_DEPTH_RANGE));
-      front.push_back(pass->GetStageMilliseconds(vtkRefractionPass::TIMED_FRONT));
-    }
-  }
-  frameTimer.ReleaseGraphicsResources();
-  return { Median(cpu), Median(gpu), Median(back), Median(range), Median(front) };
-}
-
 // The window's colour as floats in [0,1], bottom row first (as the reference).
 std::vector<float> GrabColour(vtkRenderWindow* window)
 {
@@ -358,6 +397,87 @@ std::vector<float> Floats(vtkImageData* image, const char* name, int components)
   return values;
 }
 
+double Median(std::vector<double> v)
+{
+  if (v.empty())
+  {
+    return -1.0;
+  }
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+Spread SpreadOf(const std::vector<double>& v)
+{
+  Spread s;
+  if (!v.empty())
+  {
+    s.Median = Median(v);
+    s.Min = *std::min_element(v.begin(), v.end());
+    s.Max = *std::max_element(v.begin(), v.end());
+  }
+  return s;
+}
+
+struct Timing
+{
+  double Cpu = -1, GpuFrame = -1;
+  std::vector<double> Stages; // vtkRefractionPass's timed stages, 0..TIMED_STAGE_COUNT-1
+};
+
+// Medians over `frames` frames after 5 warm-up frames: CPU wall time per frame (to
+// glFinish), a GL timer query around the frame, and the pass's own stage timers.
+Timing TimeFrames(vtkRenderWindow* window, vtkRefractionPass* pass, int frames)
+{
+  vtkNew<vtkTimerLog> clock;
+  vtkOpenGLRenderTimer frameTimer;
+  std::vector<double> cpu, gpu;
+  std::vector<std::vector<double>> stages(vtkRefractionPass::TIMED_STAGE_COUNT);
+  const bool gpuTimers = vtkOpenGLRenderTimer::IsSupported();
+  for (int i = 0; i < 5 + frames; ++i)
+  {
+    clock->StartTimer();
+    if (gpuTimers)
+    {
+      frameTimer.Reset();
+      frameTimer.Start();
+    }
+    window->Render();
+    if (gpuTimers)
+    {
+      frameTimer.Stop();
+    }
+    glFinish();
+    clock->StopTimer();
+    if (i < 5)
+    {
+      continue;
+    }
+    cpu.push_back(clock->GetElapsedTime() * 1e3);
+    if (gpuTimers && frameTimer.Ready())
+    {
+      gpu.push_back(frameTimer.GetElapsedMilliseconds());
+    }
+    for (int s = 0; pass && pass->GetGPUTiming() && s < vtkRefractionPass::TIMED_STAGE_COUNT; ++s)
+    {
+      const double ms = pass->GetStageMilliseconds(s);
+      if (ms >= 0.0)
+      {
+        stages[s].push_back(ms);
+      }
+    }
+  }
+  frameTimer.ReleaseGraphicsResources();
+  Timing t;
+  t.Cpu = Median(cpu);
+  t.GpuFrame = Median(gpu);
+  for (auto& stage : stages)
+  {
+    t.Stages.push_back(Median(stage));
+  }
+  return t;
+}
+
 struct Reference
 {
   std::vector<float> Colour, P2, T2;
@@ -366,11 +486,42 @@ struct Reference
   double Diagonal = 1;
 };
 
-bool Trace(vtkRenderer* renderer, int size, int mode, Reference& out)
+// The reference's ProgressEvent shown on one line (every 10 %), ended when the trace is.
+struct ProgressLine
+{
+  std::string Label;
+  int Last = -100;
+};
+
+void ShowProgress(vtkObject*, unsigned long, void* client, void* call)
+{
+  auto* line = static_cast<ProgressLine*>(client);
+  const double fraction = *static_cast<double*>(call);
+  const int percent = static_cast<int>(100.0 * fraction);
+  // On a terminal the line is rewritten in place; in a log only its end is written.
+  static const bool terminal = isatty(fileno(stdout)) != 0;
+  if (fraction < 1.0 && (!terminal || percent < line->Last + 10))
+  {
+    return;
+  }
+  line->Last = percent;
+  std::printf("\r  reference %-34s %3d %%%s", line->Label.c_str(), percent,
+    fraction >= 1.0 ? "\n" : "");
+  std::fflush(stdout);
+}
+
+bool Trace(vtkRenderer* renderer, int size, int mode, int samples, const std::string& label,
+  Reference& out)
 {
   vtkNew<vtkRefractionReference> reference;
   reference->SetMode(mode);
   reference->SetThreads(2);
+  reference->SetSamplesPerSide(samples);
+  ProgressLine line{ label };
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetCallback(ShowProgress);
+  progress->SetClientData(&line);
+  reference->AddObserver(vtkCommand::ProgressEvent, progress);
   if (!reference->Trace(renderer, size, size))
   {
     return false;
@@ -379,7 +530,7 @@ bool Trace(vtkRenderer* renderer, int size, int mode, Reference& out)
   out.Colour = Floats(image, "Colour", 3);
   for (float& c : out.Colour)
   {
-    c = std::min(std::max(c, 0.0f), 1.0f);
+    c = std::min(std::max(c, 0.0f), 1.0f); // what an 8-bit window can show
   }
   out.P2 = Floats(image, "P2", 3);
   out.T2 = Floats(image, "T2", 3);
@@ -397,34 +548,60 @@ bool Trace(vtkRenderer* renderer, int size, int mode, Reference& out)
   return true;
 }
 
-void Measure(Row& row, const std::vector<float>& colour, vtkImageData* debug,
-  const Reference& two, const Reference& full, int size)
+// The four references of one mesh at one size.
+struct Truth
+{
+  Reference Two, Full, TwoSS, FullSS;
+};
+
+Errors Compare(const std::vector<float>& colour, const Reference& reference,
+  const std::vector<unsigned char>& mask, const std::vector<unsigned char>& tirMask,
+  const std::vector<unsigned char>& restMask, int size)
 {
   const size_t n = static_cast<size_t>(size) * size;
+  Errors e;
+  rf_psnr(colour.data(), reference.Colour.data(), n, 3, mask.data(), &e.Psnr);
+  rf_rmse(colour.data(), reference.Colour.data(), n, 3, mask.data(), &e.Rmse);
+  rf_ssim(colour.data(), reference.Colour.data(), size, size, 3, mask.data(), &e.Ssim);
+  // Left at -1 where there are no such pixels.
+  rf_psnr(colour.data(), reference.Colour.data(), n, 3, tirMask.data(), &e.PsnrTir);
+  rf_psnr(colour.data(), reference.Colour.data(), n, 3, restMask.data(), &e.PsnrRest);
+  return e;
+}
+
+// Errors on the pixels where both the pass and the reference (its pixel centre) see glass;
+// TIR pixels are those where the two-interface reference's ray is totally reflected at the
+// exit.
+void Measure(Row& row, const std::vector<float>& colour, vtkImageData* debug, const Truth& truth,
+  int size)
+{
+  const size_t n = static_cast<size_t>(size) * size;
+  const Reference& two = truth.Two;
   const auto flags = Floats(debug, "Flags", 1);
   const auto t2 = Floats(debug, "T2", 3);
   const auto p2 = Floats(debug, "P2", 3);
-  std::vector<unsigned char> mask(n, 0);
-  std::vector<unsigned char> tir(n, 0);
-  long count = 0;
+  std::vector<unsigned char> mask(n, 0), tir(n, 0), refTir(n, 0), rest(n, 0);
+  long count = 0, tirCount = 0;
   for (size_t i = 0; i < n; ++i)
   {
     const bool glass = i < flags.size() && flags[i] > 0.5f;
     mask[i] = glass && two.Hit[i] ? 1 : 0;
     tir[i] = glass && flags[i] > 1.5f ? 1 : 0;
+    refTir[i] = mask[i] && two.Tir[i] ? 1 : 0;
+    rest[i] = mask[i] && !two.Tir[i] ? 1 : 0;
     count += mask[i];
+    tirCount += refTir[i];
   }
   row.Pixels = count;
+  row.TirPixels = tirCount;
   if (count == 0)
   {
     return;
   }
-  rf_psnr(colour.data(), two.Colour.data(), n, 3, mask.data(), &row.Psnr2);
-  rf_rmse(colour.data(), two.Colour.data(), n, 3, mask.data(), &row.Rmse2);
-  rf_ssim(colour.data(), two.Colour.data(), size, size, 3, mask.data(), &row.Ssim2);
-  rf_psnr(colour.data(), full.Colour.data(), n, 3, mask.data(), &row.PsnrF);
-  rf_rmse(colour.data(), full.Colour.data(), n, 3, mask.data(), &row.RmseF);
-  rf_ssim(colour.data(), full.Colour.data(), size, size, 3, mask.data(), &row.SsimF);
+  row.Two = Compare(colour, truth.Two, mask, refTir, rest, size);
+  row.Full = Compare(colour, truth.Full, mask, refTir, rest, size);
+  row.TwoSS = Compare(colour, truth.TwoSS, mask, refTir, rest, size);
+  row.FullSS = Compare(colour, truth.FullSS, mask, refTir, rest, size);
   rf_error_stats angle{};
   if (rf_angular_error(t2.data(), two.T2.data(), n, mask.data(), &angle) == RF_OK)
   {
@@ -460,6 +637,135 @@ void WritePng(const std::string& path, const std::vector<float>& rgb, int size)
   writer->Write();
 }
 
+// One CSV column: its name, how a row writes it and how a row reads it back.
+struct Column
+{
+  std::string Name;
+  std::function<std::string(const Row&)> Get;
+  std::function<void(Row&, const std::string&)> Set;
+};
+
+std::string Number(double v)
+{
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+std::vector<Column> Columns(int stageCount)
+{
+  std::vector<Column> c;
+  auto text = [&c](const char* name, std::function<std::string(const Row&)> get,
+                std::function<void(Row&, const std::string&)> set) {
+    c.push_back({ name, std::move(get), std::move(set) });
+  };
+  auto number = [&c](const std::string& name, std::function<double&(Row&)> field) {
+    c.push_back({ name,
+      [field](const Row& r) { return Number(field(const_cast<Row&>(r))); },
+      [field](Row& r, const std::string& v) { field(r) = std::atof(v.c_str()); } });
+  };
+  text("mesh", [](const Row& r) { return r.Mesh; }, [](Row& r, const std::string& v) { r.Mesh = v; });
+  c.push_back({ "triangles", [](const Row& r) { return std::to_string(r.Triangles); },
+    [](Row& r, const std::string& v) { r.Triangles = std::atoll(v.c_str()); } });
+  c.push_back({ "size", [](const Row& r) { return std::to_string(r.Size); },
+    [](Row& r, const std::string& v) { r.Size = std::atoi(v.c_str()); } });
+  text("method", [](const Row& r) { return r.Config.Method; },
+    [](Row& r, const std::string& v) { r.Config.Method = v; });
+  c.push_back({ "steps", [](const Row& r) { return std::to_string(r.Config.Steps); },
+    [](Row& r, const std::string& v) { r.Config.Steps = std::atoi(v.c_str()); } });
+  text("depth_range", [](const Row& r) { return std::string(r.Config.Bounds ? "bbox" : "reduction"); },
+    [](Row& r, const std::string& v) { r.Config.Bounds = v == "bbox"; });
+  c.push_back({ "adaptive", [](const Row& r) { return std::string(r.Config.Adaptive ? "1" : "0"); },
+    [](Row& r, const std::string& v) { r.Config.Adaptive = v == "1"; } });
+  text("back_surface", [](const Row& r) { return std::string(r.Config.Nearest ? "nearest" : "furthest"); },
+    [](Row& r, const std::string& v) { r.Config.Nearest = v == "nearest"; });
+  c.push_back({ "secant", [](const Row& r) { return std::string(r.Config.Paper ? "0" : "1"); },
+    [](Row& r, const std::string& v) { r.Config.Paper = v == "0"; } });
+  c.push_back({ "repeats", [](const Row& r) { return std::to_string(r.Repeats); },
+    [](Row& r, const std::string& v) { r.Repeats = std::atoi(v.c_str()); } });
+  number("cpu_ms", [](Row& r) -> double& { return r.CpuMs.Median; });
+  number("cpu_ms_min", [](Row& r) -> double& { return r.CpuMs.Min; });
+  number("cpu_ms_max", [](Row& r) -> double& { return r.CpuMs.Max; });
+  number("plain_cpu_ms", [](Row& r) -> double& { return r.PlainCpuMs.Median; });
+  number("plain_cpu_ms_min", [](Row& r) -> double& { return r.PlainCpuMs.Min; });
+  number("plain_cpu_ms_max", [](Row& r) -> double& { return r.PlainCpuMs.Max; });
+  number("cpu_ratio", [](Row& r) -> double& { return r.Ratio.Median; });
+  number("cpu_ratio_min", [](Row& r) -> double& { return r.Ratio.Min; });
+  number("cpu_ratio_max", [](Row& r) -> double& { return r.Ratio.Max; });
+  number("gpu_frame_ms", [](Row& r) -> double& { return r.GpuFrameMs; });
+  number("plain_gpu_ms", [](Row& r) -> double& { return r.PlainGpuMs; });
+  for (int s = 0; s < stageCount; ++s)
+  {
+    number("gpu_stage" + std::to_string(s) + "_ms", [s](Row& r) -> double& {
+      if (static_cast<int>(r.StageMs.size()) <= s)
+        r.StageMs.resize(s + 1, -1.0);
+      return r.StageMs[s];
+    });
+  }
+  number("precompute_ms", [](Row& r) -> double& { return r.PrecomputeMs; });
+  number("ref_two_ms", [](Row& r) -> double& { return r.RefTwoMs; });
+  number("ref_full_ms", [](Row& r) -> double& { return r.RefFullMs; });
+  number("ref_full_ss_ms", [](Row& r) -> double& { return r.RefFullSSMs; });
+  number("bytes_per_pixel", [](Row& r) -> double& { return r.BytesPerPixel; });
+  const std::pair<const char*, Errors Row::*> references[] = { { "two", &Row::Two },
+    { "full", &Row::Full }, { "two_ss", &Row::TwoSS }, { "full_ss", &Row::FullSS } };
+  for (const auto& ref : references)
+  {
+    const std::string suffix = ref.first;
+    Errors Row::*member = ref.second;
+    number("psnr_" + suffix, [member](Row& r) -> double& { return (r.*member).Psnr; });
+    number("rmse_" + suffix, [member](Row& r) -> double& { return (r.*member).Rmse; });
+    number("ssim_" + suffix, [member](Row& r) -> double& { return (r.*member).Ssim; });
+    number("psnr_" + suffix + "_tir", [member](Row& r) -> double& { return (r.*member).PsnrTir; });
+    number("psnr_" + suffix + "_rest", [member](Row& r) -> double& { return (r.*member).PsnrRest; });
+  }
+  number("t2_deg_mean", [](Row& r) -> double& { return r.AngMean; });
+  number("t2_deg_p95", [](Row& r) -> double& { return r.AngP95; });
+  number("t2_deg_max", [](Row& r) -> double& { return r.AngMax; });
+  number("p2_rel_mean", [](Row& r) -> double& { return r.P2Mean; });
+  number("p2_rel_max", [](Row& r) -> double& { return r.P2Max; });
+  number("tir_share", [](Row& r) -> double& { return r.TirShare; });
+  number("ref_tir_share", [](Row& r) -> double& { return r.RefTirShare; });
+  c.push_back({ "pixels", [](const Row& r) { return std::to_string(r.Pixels); },
+    [](Row& r, const std::string& v) { r.Pixels = std::atol(v.c_str()); } });
+  c.push_back({ "tir_pixels", [](const Row& r) { return std::to_string(r.TirPixels); },
+    [](Row& r, const std::string& v) { r.TirPixels = std::atol(v.c_str()); } });
+  return c;
+}
+
+void WriteCsv(const std::string& path, const std::vector<Row>& rows, const std::string& renderer)
+{
+  std::ofstream f(path);
+  const auto columns = Columns(vtkRefractionPass::TIMED_STAGE_COUNT);
+  f << "renderer";
+  for (const auto& column : columns)
+    f << ',' << column.Name;
+  f << '\n';
+  for (const Row& r : rows)
+  {
+    f << '"' << renderer << '"';
+    for (const auto& column : columns)
+      f << ',' << column.Get(r);
+    f << '\n';
+  }
+}
+
+std::vector<std::string> CsvFields(const std::string& text)
+{
+  std::vector<std::string> out(1);
+  bool quoted = false;
+  for (char c : text)
+  {
+    if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+      out.emplace_back();
+    else
+      out.back() += c;
+  }
+  return out;
+}
+
 // Rows back from a results.csv written by WriteCsv, to remake results.md and pareto.png.
 bool ReadCsv(const std::string& path, std::vector<Row>& rows, std::string& renderer)
 {
@@ -469,137 +775,59 @@ bool ReadCsv(const std::string& path, std::vector<Row>& rows, std::string& rende
   {
     return false;
   }
-  auto fields = [](const std::string& text) {
-    std::vector<std::string> out(1);
-    bool quoted = false;
-    for (char c : text)
-    {
-      if (c == '"')
-        quoted = !quoted;
-      else if (c == ',' && !quoted)
-        out.emplace_back();
-      else
-        out.back() += c;
-    }
-    return out;
-  };
-  const auto header = fields(line);
+  const auto header = CsvFields(line);
+  int stageCount = 0;
+  for (const auto& name : header)
+    stageCount += name.rfind("gpu_stage", 0) == 0 ? 1 : 0;
+  const auto columns = Columns(stageCount);
   while (std::getline(in, line))
   {
-    const auto f = fields(line);
+    const auto f = CsvFields(line);
     if (f.size() != header.size())
       continue;
-    std::map<std::string, std::string> v;
-    for (size_t i = 0; i < f.size(); ++i)
-      v[header[i]] = f[i];
-    auto d = [&](const char* k) { return std::atof(v[k].c_str()); };
     Row r;
-    renderer = v["renderer"];
-    r.Mesh = v["mesh"];
-    r.Triangles = static_cast<vtkIdType>(d("triangles"));
-    r.Size = static_cast<int>(d("size"));
-    r.Config.Method = v["method"];
-    r.Config.Steps = static_cast<int>(d("steps"));
-    r.Config.Bounds = v["depth_range"] == "bbox";
-    r.Config.Adaptive = v["adaptive"] == "1";
-    r.Config.Nearest = v["back_surface"] == "nearest";
-    r.Config.Paper = v["secant"] == "0";
-    r.CpuMs = d("cpu_ms");
-    r.GpuFrameMs = d("gpu_frame_ms");
-    r.GpuBackMs = d("gpu_back_ms");
-    r.GpuRangeMs = d("gpu_range_ms");
-    r.GpuFrontMs = d("gpu_front_ms");
-    r.PlainCpuMs = d("plain_cpu_ms");
-    r.PlainGpuMs = d("plain_gpu_ms");
-    r.PrecomputeMs = d("precompute_ms");
-    r.RefTwoMs = d("ref_two_ms");
-    r.RefFullMs = d("ref_full_ms");
-    r.BytesPerPixel = d("bytes_per_pixel");
-    r.Psnr2 = d("psnr_two");
-    r.Rmse2 = d("rmse_two");
-    r.Ssim2 = d("ssim_two");
-    r.PsnrF = d("psnr_full");
-    r.RmseF = d("rmse_full");
-    r.SsimF = d("ssim_full");
-    r.AngMean = d("t2_deg_mean");
-    r.AngP95 = d("t2_deg_p95");
-    r.AngMax = d("t2_deg_max");
-    r.P2Mean = d("p2_rel_mean");
-    r.P2Max = d("p2_rel_max");
-    r.TirShare = d("tir_share");
-    r.RefTirShare = d("ref_tir_share");
-    r.Pixels = static_cast<long>(d("pixels"));
+    for (size_t i = 0; i < f.size(); ++i)
+    {
+      if (header[i] == "renderer")
+        renderer = f[i];
+      for (const auto& column : columns)
+        if (column.Name == header[i])
+          column.Set(r, f[i]);
+    }
     rows.push_back(r);
   }
   return !rows.empty();
 }
 
-std::vector<Setting> Settings(bool smoke)
+std::string Db(double v)
 {
-  std::vector<Setting> settings;
-  settings.push_back({ "SIR", 0, false, false });
-  const std::vector<int> steps = smoke ? std::vector<int>{ 0, 5 } : std::vector<int>{ 0, 1, 2, 3, 5, 8 };
-  for (int bounds = 0; bounds < 2; ++bounds)
-  {
-    for (int s : steps)
-    {
-      settings.push_back({ "DIR", s, bounds == 1, false });
-    }
-  }
-  settings.push_back({ "DIR", 8, false, true });
-  settings.push_back({ "DIR", 5, false, false, true });
-  settings.push_back({ "DIR", 5, false, false, false, true });
-  settings.push_back({ "ISR", 0, false, false });
-  settings.push_back({ "SSP", 0, false, false });
-  return settings;
-}
-
-int MethodId(const std::string& m)
-{
-  return m == "SIR" ? vtkRefractionPass::SIR
-                    : m == "ISR" ? vtkRefractionPass::ISR
-                                 : m == "SSP" ? vtkRefractionPass::SSP : vtkRefractionPass::DIR;
-}
-
-void WriteCsv(const std::string& path, const std::vector<Row>& rows, const std::string& renderer)
-{
-  std::ofstream f(path);
-  f << "renderer,mesh,triangles,size,method,steps,depth_range,adaptive,cpu_ms,gpu_frame_ms,"
-       "back_surface,secant,gpu_back_ms,gpu_range_ms,gpu_front_ms,plain_cpu_ms,plain_gpu_ms,cpu_ratio,"
-       "precompute_ms,ref_two_ms,ref_full_ms,bytes_per_pixel,psnr_two,rmse_two,ssim_two,"
-       "psnr_full,rmse_full,ssim_full,t2_deg_mean,t2_deg_p95,t2_deg_max,p2_rel_mean,"
-       "p2_rel_max,tir_share,ref_tir_share,pixels\n";
-  for (const Row& r : rows)
-  {
-    f << '"' << renderer << "\"," << r.Mesh << ',' << r.Triangles << ',' << r.Size << ','
-      << r.Config.Method << ',' << r.Config.Steps << ','
-      << (r.Config.Bounds ? "bbox" : "reduction") << ',' << (r.Config.Adaptive ? 1 : 0) << ','
-      << r.CpuMs << ',' << r.GpuFrameMs << ',' << (r.Config.Nearest ? "nearest" : "furthest")
-      << ',' << (r.Config.Paper ? 0 : 1) << ',' << r.GpuBackMs << ',' << r.GpuRangeMs << ','
-      << r.GpuFrontMs << ',' << r.PlainCpuMs << ',' << r.PlainGpuMs << ','
-      << r.CpuMs / r.PlainCpuMs << ',' << r.PrecomputeMs << ',' << r.RefTwoMs << ','
-      << r.RefFullMs << ',' << r.BytesPerPixel << ',' << r.Psnr2 << ',' << r.Rmse2 << ','
-      << r.Ssim2 << ',' << r.PsnrF << ',' << r.RmseF << ',' << r.SsimF << ',' << r.AngMean
-      << ',' << r.AngP95 << ',' << r.AngMax << ',' << r.P2Mean << ',' << r.P2Max << ','
-      << r.TirShare << ',' << r.RefTirShare << ',' << r.Pixels << '\n';
-  }
+  char text[32];
+  std::snprintf(text, sizeof(text), v < 0 ? "-" : "%.1f", v);
+  return text;
 }
 
 void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
-  const std::string& renderer, const std::string& windowPath, int frames)
+  const std::string& renderer, const std::string& windowPath, const std::string& run)
 {
   std::ofstream f(path);
-  char line[512];
-  f << "# Error against run time\n\nRenderer: " << renderer << " (" << windowPath
-    << "). Times are medians over " << frames
-    << " frames after 5 warm-up frames; `ratio` is the glass frame time over a plain VTK "
-       "render of the same mesh in the same run. Errors on glass pixels only, against the "
-       "Embree reference: `two` is the two-interface reference (the approximation's own "
-       "error), `full` the Whitted reference (depth 8, Fresnel splits, TIR). ISR's `pre` is "
-       "the per-vertex d_N ray casting (recomputed whenever the points change). Rows marked "
-       "`paper` run the paper's search without the secant step, `nearest` capture the nearest "
-       "back surface instead of the furthest. Stage times are GL timer queries (on llvmpipe "
-       "they include work queued before the stage); -1 marks a stage the method does not run.\n\n";
+  char line[1024];
+  f << "# Error against run time\n\nRenderer: " << renderer << " (" << windowPath << "). "
+    << run << "\n\n"
+    << "How to read it. Every row (a setting on a mesh at a size) was timed together with a "
+       "plain VTK render of the same mesh right after it, repeated in one shuffled order; "
+       "`ms` and `ratio` (glass frame time over that plain render) are medians over the "
+       "repeats with [min-max] beside them; each repeat is itself the median of the timed "
+       "frames after 5 warm-up frames. Errors are on glass pixels only (where the pass and "
+       "the reference's pixel centre both see glass), against the Embree reference: `two` is "
+       "the two-interface reference (the approximation's own error), `full` the Whitted "
+       "reference (depth 8, Fresnel splits, TIR), `full SS` the full reference averaged over "
+       "N x N rays per pixel (the anti-aliased truth a camera sees). `TIR` / `rest`: PSNR "
+       "against `full SS` on the pixels where the two-interface reference's ray is totally "
+       "reflected at the exit, and on the others (`-`: none). Stage times are the pass's GL "
+       "timer queries, stage k = vtkRefractionPass's TIMED_* enumerator k (today 0 back "
+       "capture, 1 depth range, 2 front/shading); on llvmpipe they include work queued before "
+       "the stage; -1 marks a stage the method does not run. `B/px` is "
+       "vtkRefractionPass::GetTextureBytes() over the pixels.\n\n";
   // Table 1 of the paper: fps per model at 512x512 (or the size nearest it).
   std::map<std::string, std::map<std::string, const Row*>> table;
   int tableSize = 0;
@@ -608,42 +836,83 @@ void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
     if (tableSize == 0 || std::abs(r.Size - 512) < std::abs(tableSize - 512))
       tableSize = r.Size;
   }
-  f << "## Table 1 analogue (" << tableSize << "x" << tableSize << ", fps from CPU frame time; RT in seconds)\n\n"
-    << "| model | triangles | pixels | DIR | ISR | SIR | SSP | plain VTK | RT (two-interface) | RT (full) |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|\n";
+  f << "## Table 1 analogue (" << tableSize << "x" << tableSize
+    << ", fps from the median CPU frame time; RT in seconds, 2 threads)\n\n"
+    << "| model | triangles | pixels | DIR | ISR | SIR | SSP | plain VTK | RT (two-interface) | "
+       "RT (full) | RT (full, SS) |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& r : rows)
   {
-    if (r.Size != tableSize)
+    if (r.Size != tableSize || r.Config.Method == "none")
       continue;
-    std::string key = r.Config.Method;
-    if (r.Config.Method == "DIR" && (r.Config.Steps != 5 || r.Config.Bounds || r.Config.Adaptive ||
-                                      r.Config.Nearest || r.Config.Paper))
+    if (r.Config.Method == "DIR" && (r.Config.Steps != 5 || r.Config.Bounds ||
+                                      r.Config.Adaptive || r.Config.Nearest || r.Config.Paper))
       continue;
-    table[r.Mesh][key] = &r;
+    table[r.Mesh][r.Config.Method] = &r;
   }
   for (auto& entry : table)
   {
     auto fps = [&](const char* m) {
       auto it = entry.second.find(m);
-      return it == entry.second.end() ? std::string("-")
-                                      : std::to_string(static_cast<int>(1000.0 / it->second->CpuMs + 0.5));
+      return it == entry.second.end()
+        ? std::string("-")
+        : std::to_string(static_cast<int>(1000.0 / it->second->CpuMs.Median + 0.5));
     };
     const Row* any = entry.second.begin()->second;
-    std::snprintf(line, sizeof(line), "| %s | %lld | %ld | %s | %s | %s | %s | %d | %.2f s | %.2f s |\n",
-      entry.first.c_str(), static_cast<long long>(any->Triangles), any->Pixels, fps("DIR").c_str(),
-      fps("ISR").c_str(), fps("SIR").c_str(), fps("SSP").c_str(),
-      static_cast<int>(1000.0 / any->PlainCpuMs + 0.5), any->RefTwoMs / 1000.0, any->RefFullMs / 1000.0);
+    std::snprintf(line, sizeof(line),
+      "| %s | %lld | %ld | %s | %s | %s | %s | %d | %.2f s | %.2f s | %.2f s |\n",
+      entry.first.c_str(), static_cast<long long>(any->Triangles), any->Pixels,
+      fps("DIR").c_str(), fps("ISR").c_str(), fps("SIR").c_str(), fps("SSP").c_str(),
+      static_cast<int>(1000.0 / any->PlainCpuMs.Median + 0.5), any->RefTwoMs / 1000.0,
+      any->RefFullMs / 1000.0, any->RefFullSSMs / 1000.0);
     f << line;
   }
-  f << "\n## All runs\n\n| mesh | size | method | cpu ms | ratio | gpu ms (back/range/front) | pre ms | B/px | PSNR two | SSIM two | PSNR full | T2 deg mean/p95 | P2 rel mean | TIR |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  f << "\n## All rows\n\n| mesh | size | method | ms [min-max] | ratio [min-max] | stage ms | "
+       "pre ms | B/px | PSNR two | PSNR full | PSNR full SS | SSIM full SS | TIR / rest (full "
+       "SS) | TIR / rest (two) | T2 deg mean/p95 | TIR px |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& r : rows)
   {
+    std::string stages;
+    for (size_t s = 0; s < r.StageMs.size(); ++s)
+    {
+      char stage[32];
+      std::snprintf(stage, sizeof(stage), "%s%.2f", s ? "/" : "", r.StageMs[s]);
+      stages += stage;
+    }
     std::snprintf(line, sizeof(line),
-      "| %s | %d | %s | %.2f | %.2f | %.2f (%.2f/%.2f/%.2f) | %.1f | %.0f | %.1f | %.3f | %.1f | %.2f/%.2f | %.4f | %.3f |\n",
-      r.Mesh.c_str(), r.Size, r.Config.Label().c_str(), r.CpuMs, r.CpuMs / r.PlainCpuMs,
-      r.GpuFrameMs, r.GpuBackMs, r.GpuRangeMs, r.GpuFrontMs, r.PrecomputeMs, r.BytesPerPixel,
-      r.Psnr2, r.Ssim2, r.PsnrF, r.AngMean, r.AngP95, r.P2Mean, r.TirShare);
+      "| %s | %d | %s | %.2f [%.2f-%.2f] | %.2f [%.2f-%.2f] | %s | %.1f | %.0f | %s | %s | %s | "
+      "%.3f | %s / %s | %s / %s | %.2f/%.2f | %ld |\n",
+      r.Mesh.c_str(), r.Size, r.Config.Label().c_str(), r.CpuMs.Median, r.CpuMs.Min,
+      r.CpuMs.Max, r.Ratio.Median, r.Ratio.Min, r.Ratio.Max, stages.c_str(), r.PrecomputeMs,
+      r.BytesPerPixel, Db(r.Two.Psnr).c_str(), Db(r.Full.Psnr).c_str(),
+      Db(r.FullSS.Psnr).c_str(), r.FullSS.Ssim, Db(r.FullSS.PsnrTir).c_str(),
+      Db(r.FullSS.PsnrRest).c_str(), Db(r.Two.PsnrTir).c_str(), Db(r.Two.PsnrRest).c_str(),
+      r.AngMean, r.AngP95, r.TirPixels);
+    f << line;
+  }
+  // The noise that remains: the same plain render timed in every job of a mesh and size.
+  f << "\n## Noise\n\nThe plain render does the same work in every job of a mesh and size, so "
+       "its spread over the run is the machine's noise; a glass row's ratio spread over its "
+       "repeats is what a single ratio may be off by.\n\n"
+       "| mesh | size | plain ms median [min-max] over rows | widest ratio spread (max/min) |\n"
+       "|---|---|---|---|\n";
+  std::map<std::pair<std::string, int>, std::vector<const Row*>> groups;
+  for (const Row& r : rows)
+    groups[{ r.Mesh, r.Size }].push_back(&r);
+  for (const auto& g : groups)
+  {
+    std::vector<double> plain;
+    double lo = 1e300, hi = 0, widest = 1.0;
+    for (const Row* r : g.second)
+    {
+      plain.push_back(r->PlainCpuMs.Median);
+      lo = std::min(lo, r->PlainCpuMs.Min);
+      hi = std::max(hi, r->PlainCpuMs.Max);
+      if (r->Ratio.Min > 0)
+        widest = std::max(widest, r->Ratio.Max / r->Ratio.Min);
+    }
+    std::snprintf(line, sizeof(line), "| %s | %d | %.2f [%.2f-%.2f] | %.2f |\n",
+      g.first.first.c_str(), g.first.second, Median(plain), lo, hi, widest);
     f << line;
   }
 }
@@ -682,9 +951,10 @@ void WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
     vtkChart* chart = matrix->GetChart(vtkVector2i(static_cast<int>(m % columns),
       rowsCount - 1 - static_cast<int>(m / columns)));
     chart->SetTitle(meshes[m] + " " + std::to_string(plotSize) + "x" + std::to_string(plotSize));
-    chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("frame time / plain VTK");
-    chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE against the full reference");
+    chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("frame time / plain VTK (median of repeats)");
+    chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE against the supersampled full reference");
     chart->SetShowLegend(m == 0);
+    double largest[2] = { 0.0, 0.0 }; // x, y over every plotted point
     for (int family = 0; family < 8; ++family)
     {
       vtkNew<vtkTable> table;
@@ -705,7 +975,7 @@ void WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
           : method == "SSP" ? 5
           : r.Config.Paper ? 6 : r.Config.Nearest ? 7 : r.Config.Adaptive ? 3 : r.Config.Bounds ? 2 : 1;
         if (f == family)
-          points.emplace_back(r.CpuMs / r.PlainCpuMs, r.RmseF);
+          points.emplace_back(r.Ratio.Median, r.FullSS.Rmse);
       }
       if (points.empty())
         continue;
@@ -720,6 +990,19 @@ void WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
       plot->SetInputData(table, 0, 1);
       plot->SetColor(colours[family][0], colours[family][1], colours[family][2], 255);
       plot->SetWidth(2.0);
+      for (const auto& point : points)
+      {
+        largest[0] = std::max(largest[0], point.first);
+        largest[1] = std::max(largest[1], point.second);
+      }
+    }
+    // From zero with a margin, so that a point is never drawn on the frame (VTK's automatic
+    // range puts the extreme points on it).
+    for (int a = 0; a < 2; ++a)
+    {
+      vtkAxis* axis = chart->GetAxis(a == 0 ? vtkAxis::BOTTOM : vtkAxis::LEFT);
+      axis->SetBehavior(vtkAxis::FIXED);
+      axis->SetRange(0.0, largest[a] > 0.0 ? 1.1 * largest[a] : 1.0);
     }
   }
   view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
@@ -731,6 +1014,200 @@ void WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
   writer->SetInputConnection(grab->GetOutputPort());
   writer->SetFileName(path.c_str());
   writer->Write();
+}
+// A studio made in code, as a float lat-long image (VTK's layout: u = atan2(z, x), v =
+// asin(y), row 0 at the bottom): dim walls with a floor grid, a ceiling gradient and three
+// soft boxes far brighter than 1, so that the picture has edges to refract and the values a
+// real HDR environment has.
+vtkSmartPointer<vtkImageData> StudioEnvironment(int width, int height)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_FLOAT, 3);
+  auto* texels = static_cast<float*>(image->GetScalarPointer());
+  const double lights[3][7] = { // direction, cosine of the half angle, brightness
+    { 0.6, 0.6, 0.5, 0.97, 8.0, 7.6, 7.0 }, { -0.7, 0.35, -0.6, 0.985, 2.5, 3.5, 6.0 },
+    { 0.0, 0.9, -0.4, 0.95, 4.0, 4.0, 4.0 } };
+  for (int j = 0; j < height; ++j)
+  {
+    for (int i = 0; i < width; ++i)
+    {
+      const double theta = ((i + 0.5) / width - 0.5) / 0.1591;
+      const double phi = ((j + 0.5) / height - 0.5) / 0.3183;
+      const double d[3] = { std::cos(phi) * std::cos(theta), std::sin(phi),
+        std::cos(phi) * std::sin(theta) };
+      double rgb[3];
+      if (d[1] < 0.0)
+      {
+        // Floor: a grid on the plane y = -1.
+        const double x = d[0] / -d[1];
+        const double z = d[2] / -d[1];
+        const bool line = std::fabs(x - std::round(x)) < 0.04 || std::fabs(z - std::round(z)) < 0.04;
+        const double tone = line ? 0.9 : 0.18;
+        rgb[0] = tone;
+        rgb[1] = tone * 0.95;
+        rgb[2] = tone * 0.85;
+      }
+      else
+      {
+        const double t = d[1];
+        rgb[0] = 0.35 * (1.0 - t) + 0.10 * t;
+        rgb[1] = 0.30 * (1.0 - t) + 0.14 * t;
+        rgb[2] = 0.25 * (1.0 - t) + 0.30 * t;
+      }
+      for (const auto& light : lights)
+      {
+        const double length = std::sqrt(light[0] * light[0] + light[1] * light[1] + light[2] * light[2]);
+        const double c = (d[0] * light[0] + d[1] * light[1] + d[2] * light[2]) / length;
+        if (c > light[3])
+        {
+          for (int k = 0; k < 3; ++k)
+            rgb[k] = light[4 + k];
+        }
+      }
+      for (int k = 0; k < 3; ++k)
+        texels[3 * (j * width + i) + k] = static_cast<float>(rgb[k]);
+    }
+  }
+  return image;
+}
+
+// The renderer's environment for --environment (nullptr: the pass's built-in one).
+// Smoke runs use a smaller image and cube map (the same code, a quarter of the work).
+vtkSmartPointer<vtkTexture> MakeEnvironment(
+  const std::string& name, bool smoke, std::string& description)
+{
+  if (name == "builtin")
+  {
+    description = "the pass's built-in environment";
+    return nullptr;
+  }
+  vtkSmartPointer<vtkImageData> image;
+  if (name == "studio")
+  {
+    const int width = smoke ? 256 : 1024;
+    image = StudioEnvironment(width, width / 2);
+    description = "studio (HDR lat-long " + std::to_string(width) + "x" +
+      std::to_string(width / 2) + " made in code)";
+  }
+  else
+  {
+    vtkNew<vtkHDRReader> reader;
+    if (!reader->CanReadFile(name.c_str()))
+    {
+      std::fprintf(stderr, "--environment: %s is not a Radiance .hdr file VTK can read\n",
+        name.c_str());
+      return nullptr;
+    }
+    reader->SetFileName(name.c_str());
+    reader->Update();
+    image = reader->GetOutput();
+    description = vtksys::SystemTools::GetFilenameName(name) + " (HDR lat-long)";
+  }
+  auto texture = vtkSmartPointer<vtkOpenGLTexture>::New();
+  texture->SetInputData(image);
+  texture->SetColorModeToDirectScalars(); // floats as they are, not through a lookup table
+  texture->InterpolateOn();
+  auto cube = vtkSmartPointer<vtkEquirectangularToCubeMapTexture>::New();
+  cube->SetInputTexture(texture);
+  cube->SetCubeMapSize(smoke ? 128 : 512);
+  description += " through vtkEquirectangularToCubeMapTexture (cube map " +
+    std::to_string(cube->GetCubeMapSize()) + ")";
+  return cube;
+}
+
+std::vector<Setting> Settings(const Options& o)
+{
+  std::vector<Setting> settings;
+  if (o.Quick)
+  {
+    settings.push_back({ "DIR", 5 });
+    settings.push_back({ "SIR", 0 });
+    return settings;
+  }
+  if (o.Smoke)
+  {
+    for (const char* method : { "SIR", "DIR", "ISR", "SSP" })
+      settings.push_back({ method, 5 });
+    return settings;
+  }
+  settings.push_back({ "none", 0 });
+  settings.push_back({ "SIR", 0 });
+  for (int bounds = 0; bounds < 2; ++bounds)
+  {
+    for (int s : { 0, 1, 2, 3, 5, 8 })
+    {
+      settings.push_back({ "DIR", s, bounds == 1 });
+    }
+  }
+  settings.push_back({ "DIR", 8, false, true });
+  settings.push_back({ "DIR", 5, false, false, true });
+  settings.push_back({ "DIR", 5, false, false, false, true });
+  settings.push_back({ "ISR", 0 });
+  settings.push_back({ "SSP", 0 });
+  return settings;
+}
+
+int MethodId(const std::string& m)
+{
+  return m == "SIR" ? vtkRefractionPass::SIR
+                    : m == "ISR" ? vtkRefractionPass::ISR
+                                 : m == "SSP" ? vtkRefractionPass::SSP : vtkRefractionPass::DIR;
+}
+
+void Apply(vtkRefractionPass* pass, const Setting& setting)
+{
+  pass->SetMethod(MethodId(setting.Method));
+  pass->SetSearchSteps(setting.Steps);
+  pass->SetDepthRangeMode(setting.Bounds ? vtkRefractionPass::DEPTH_RANGE_BOUNDS
+                                         : vtkRefractionPass::DEPTH_RANGE_REDUCTION);
+  pass->SetAdaptiveSearch(setting.Adaptive);
+  pass->SetBackSurface(setting.Nearest ? vtkRefractionPass::BACK_SURFACE_NEAREST
+                                       : vtkRefractionPass::BACK_SURFACE_FURTHEST);
+  pass->SetSecantRefinement(!setting.Paper);
+}
+
+// One mesh in the scene: its actor and what the rows report about it.
+struct Scene
+{
+  std::string Name;
+  vtkSmartPointer<vtkAlgorithm> Mesh;
+  vtkSmartPointer<vtkActor> Actor;
+  vtkIdType Triangles = 0;
+};
+
+// Puts the scene's actor alone in the renderer with the benchmark's camera, at a size.
+void Show(vtkRenderWindow* window, vtkRenderer* renderer, const Scene& scene, int size)
+{
+  renderer->RemoveAllViewProps();
+  renderer->AddActor(scene.Actor);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0.0, 0.0, 1.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+  camera->SetViewAngle(30.0);
+  renderer->ResetCamera();
+  camera->Elevation(15.0);
+  camera->OrthogonalizeViewUp();
+  camera->Dolly(1.25);
+  renderer->ResetCameraClippingRange();
+  window->SetSize(size, size);
+}
+
+// The 1-minute load average (Linux), the first thing to look at when timings scatter.
+std::string LoadAverage()
+{
+  std::ifstream in("/proc/loadavg");
+  std::string value;
+  return in >> value ? value : std::string("unknown");
+}
+
+std::string Clock(double seconds)
+{
+  char text[32];
+  const int s = static_cast<int>(seconds + 0.5);
+  std::snprintf(text, sizeof(text), "%d:%02d", s / 60, s % 60);
+  return text;
 }
 }
 
@@ -747,7 +1224,8 @@ int main(int argc, char* argv[])
   if (!options.X11)
   {
     std::string error;
-    window = vtkRefractionCreateEGLWindow(std::max(maxSize, 1200), std::max(maxSize, 900), &error, &windowPath);
+    window = vtkRefractionCreateEGLWindow(
+      std::max(maxSize, 1200), std::max(maxSize, 900), &error, &windowPath);
     if (!window)
     {
       std::fprintf(stderr, "EGL unavailable (%s); using an X window\n", error.c_str());
@@ -762,6 +1240,13 @@ int main(int argc, char* argv[])
   }
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
+  std::string environmentDescription;
+  vtkSmartPointer<vtkTexture> environment =
+    MakeEnvironment(options.Environment, options.Smoke, environmentDescription);
+  if (!environment && options.Environment != "builtin")
+  {
+    return 1;
+  }
   window->SetSize(options.Sizes.front(), options.Sizes.front());
   window->Render();
   std::string rendererName = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -777,141 +1262,236 @@ int main(int argc, char* argv[])
     }
     if (options.Out.empty())
     {
-      const size_t slash = options.FromCsv.find_last_of('/');
-      options.Out = slash == std::string::npos ? "." : options.FromCsv.substr(0, slash);
+      options.Out = vtksys::SystemTools::GetFilenamePath(options.FromCsv);
+      options.Out = options.Out.empty() ? "." : options.Out;
     }
-    WriteMarkdown(options.Out + "/results.md", rows, recorded, "recorded run", options.Frames);
+    WriteMarkdown(options.Out + "/results.md", rows, recorded, "recorded run",
+      "Remade from " + options.FromCsv + ".");
     WritePareto(window, options.Out + "/pareto.png", rows);
-    std::printf("remade %s/results.md and pareto.png from %zu rows\n", options.Out.c_str(), rows.size());
+    std::printf("remade %s/results.md and pareto.png from %zu rows\n", options.Out.c_str(),
+      rows.size());
     return 0;
   }
   if (options.Out.empty())
   {
     options.Out = "bench/results/" + HostKind(rendererName);
   }
-  MakeDirectories(options.Out);
+  if (!vtksys::SystemTools::MakeDirectory(options.Out))
+  {
+    std::fprintf(stderr, "cannot create %s\n", options.Out.c_str());
+    return 1;
+  }
   std::printf("renderer %s (%s); results in %s\n", rendererName.c_str(), windowPath.c_str(),
     options.Out.c_str());
+  const auto runStart = std::chrono::steady_clock::now();
+  auto elapsed = [&runStart]() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
+  };
 
-  std::vector<Row> rows;
-  vtkNew<vtkRefractionPass> pass;
-  pass->SetGPUTiming(true);
-  renderer->SetPass(pass);
-  for (const std::string& meshName : options.Meshes)
+  std::vector<Scene> scenes;
+  for (const std::string& name : options.Meshes)
   {
-    auto mesh = MakeMesh(meshName, options);
-    if (!mesh)
+    Scene scene;
+    scene.Name = name;
+    scene.Mesh = MakeMesh(name, options);
+    if (!scene.Mesh)
     {
       continue;
     }
-    auto* distances = vtkISRDistanceFilter::SafeDownCast(mesh);
-    vtkPolyData* poly = vtkPolyData::SafeDownCast(mesh->GetOutputDataObject(0));
+    vtkPolyData* poly = vtkPolyData::SafeDownCast(scene.Mesh->GetOutputDataObject(0));
+    scene.Triangles = poly->GetNumberOfPolys() + poly->GetNumberOfStrips();
     vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(mesh->GetOutputPort());
+    mapper->SetInputConnection(scene.Mesh->GetOutputPort());
     mapper->ScalarVisibilityOff();
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    renderer->RemoveAllViewProps();
-    renderer->AddActor(actor);
-    renderer->ResetCamera();
-    renderer->GetActiveCamera()->SetViewAngle(30.0);
-    renderer->ResetCamera();
-    renderer->GetActiveCamera()->Elevation(15.0);
-    renderer->GetActiveCamera()->OrthogonalizeViewUp();
-    renderer->GetActiveCamera()->Dolly(1.25);
-    renderer->ResetCameraClippingRange();
-    const vtkIdType triangles = poly->GetNumberOfPolys() + poly->GetNumberOfStrips();
+    scene.Actor = vtkSmartPointer<vtkActor>::New();
+    scene.Actor->SetMapper(mapper);
+    scenes.push_back(scene);
+  }
+  if (scenes.empty())
+  {
+    std::fprintf(stderr, "no mesh could be made\n");
+    return 1;
+  }
 
+  // Set before any timing: VTK converts the lat-long image into its cube map once, on the
+  // first frame that uses it, and the plain render does not sample it.
+  renderer->SetEnvironmentTexture(environment);
+  vtkNew<vtkRefractionPass> pass;
+  pass->SetGPUTiming(true);
+  const std::vector<Setting> settings = Settings(options);
+  const int ss = options.Supersample;
+
+  // Errors do not depend on timing noise: one picture per row, against the four references
+  // of its mesh and size, before any timing.
+  std::vector<Row> rows;
+  for (const Scene& scene : scenes)
+  {
     for (int size : options.Sizes)
     {
-      window->SetSize(size, size);
-      // Plain VTK, and the pass with no glass in the scene (what it costs when unused).
-      vtkRefractionPass::ClearGlass(actor);
-      renderer->SetPass(nullptr);
-      const Timing plain = TimeFrames(window, nullptr, options.Frames);
+      Show(window, renderer, scene, size);
       renderer->SetPass(pass);
-      const Timing idle = TimeFrames(window, nullptr, options.Frames);
-      vtkRefractionPass::MakeGlass(actor, 1.5);
+      vtkRefractionPass::MakeGlass(scene.Actor, 1.5);
       window->Render();
-      Reference two;
-      Reference full;
-      if (!Trace(renderer, size, vtkRefractionReference::TWO_INTERFACE, two) ||
-        !Trace(renderer, size, vtkRefractionReference::FULL, full))
+      Truth truth;
+      const std::string where = scene.Name + " " + std::to_string(size) + " ";
+      const std::string ssLabel = " " + std::to_string(ss) + "x" + std::to_string(ss);
+      if (!Trace(renderer, size, vtkRefractionReference::TWO_INTERFACE, 1, where + "two",
+            truth.Two) ||
+        !Trace(renderer, size, vtkRefractionReference::FULL, 1, where + "full", truth.Full) ||
+        !Trace(renderer, size, vtkRefractionReference::TWO_INTERFACE, ss,
+          where + "two" + ssLabel, truth.TwoSS) ||
+        !Trace(renderer, size, vtkRefractionReference::FULL, ss, where + "full" + ssLabel,
+          truth.FullSS))
       {
-        std::fprintf(stderr, "%s: the reference could not trace the scene; skipped\n", meshName.c_str());
+        std::fprintf(stderr, "%s: the reference could not trace the scene; skipped\n",
+          scene.Name.c_str());
         continue;
       }
+      for (const Setting& setting : settings)
       {
         Row row;
-        row.Mesh = meshName;
-        row.Triangles = triangles;
-        row.Size = size;
-        row.Config.Method = "none";
-        row.CpuMs = idle.Cpu;
-        row.GpuFrameMs = idle.GpuFrame;
-        row.PlainCpuMs = plain.Cpu;
-        row.PlainGpuMs = plain.GpuFrame;
-        rows.push_back(row);
-      }
-      for (const Setting& setting : Settings(options.Smoke))
-      {
-        pass->SetMethod(MethodId(setting.Method));
-        pass->SetSearchSteps(setting.Steps);
-        pass->SetDepthRangeMode(setting.Bounds ? vtkRefractionPass::DEPTH_RANGE_BOUNDS
-                                               : vtkRefractionPass::DEPTH_RANGE_REDUCTION);
-        pass->SetAdaptiveSearch(setting.Adaptive);
-        pass->SetBackSurface(setting.Nearest ? vtkRefractionPass::BACK_SURFACE_NEAREST
-                                             : vtkRefractionPass::BACK_SURFACE_FURTHEST);
-        pass->SetSecantRefinement(!setting.Paper);
-        const Timing t = TimeFrames(window, pass, options.Frames);
-        pass->DebugOutputOn();
-        window->Render();
-        pass->DebugOutputOff();
-        vtkNew<vtkImageData> debug;
-        debug->DeepCopy(pass->GetDebugImage());
-        window->Render();
-        const std::vector<float> colour = GrabColour(window);
-        Row row;
-        row.Mesh = meshName;
-        row.Triangles = triangles;
+        row.Mesh = scene.Name;
+        row.Triangles = scene.Triangles;
         row.Size = size;
         row.Config = setting;
-        row.CpuMs = t.Cpu;
-        row.GpuFrameMs = t.GpuFrame;
-        row.GpuBackMs = t.Back;
-        row.GpuRangeMs = t.Range;
-        row.GpuFrontMs = t.Front;
-        row.PlainCpuMs = plain.Cpu;
-        row.PlainGpuMs = plain.GpuFrame;
-        row.PrecomputeMs = setting.Method == "ISR" && distances ? distances->GetLastComputeSeconds() * 1e3 : 0.0;
-        row.RefTwoMs = two.Seconds * 1e3;
-        row.RefFullMs = full.Seconds * 1e3;
-        row.BytesPerPixel = static_cast<double>(pass->GetTextureBytes()) / (static_cast<double>(size) * size);
-        Measure(row, colour, debug, two, full, size);
-        if (options.Dump)
+        row.RefTwoMs = truth.Two.Seconds * 1e3;
+        row.RefFullMs = truth.Full.Seconds * 1e3;
+        row.RefFullSSMs = truth.FullSS.Seconds * 1e3;
+        if (setting.Method != "none")
         {
-          std::string label = setting.Label();
-          std::replace(label.begin(), label.end(), ' ', '_');
-          std::replace(label.begin(), label.end(), '<', '_');
-          std::replace(label.begin(), label.end(), '=', '_');
-          const std::string stem = options.Out + "/" + meshName + "_" + std::to_string(size) + "_";
-          WritePng(stem + label + ".png", colour, size);
-          WritePng(stem + "reference_two.png", two.Colour, size);
-          WritePng(stem + "reference_full.png", full.Colour, size);
+          Apply(pass, setting);
+          pass->DebugOutputOn();
+          window->Render();
+          pass->DebugOutputOff();
+          vtkNew<vtkImageData> debug;
+          debug->DeepCopy(pass->GetDebugImage());
+          window->Render();
+          const std::vector<float> colour = GrabColour(window);
+          row.BytesPerPixel =
+            static_cast<double>(pass->GetTextureBytes()) / (static_cast<double>(size) * size);
+          auto* distances = vtkISRDistanceFilter::SafeDownCast(scene.Mesh);
+          row.PrecomputeMs = setting.Method == "ISR" && distances
+            ? distances->GetLastComputeSeconds() * 1e3
+            : 0.0;
+          Measure(row, colour, debug, truth, size);
+          if (options.Dump)
+          {
+            std::string label = setting.Label();
+            for (char& c : label)
+              c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+            const std::string stem =
+              options.Out + "/" + scene.Name + "_" + std::to_string(size) + "_";
+            WritePng(stem + label + ".png", colour, size);
+            WritePng(stem + "reference_two.png", truth.Two.Colour, size);
+            WritePng(stem + "reference_full.png", truth.Full.Colour, size);
+            WritePng(stem + "reference_full_ss.png", truth.FullSS.Colour, size);
+          }
+          std::printf("  %-10s %4d %-18s PSNR two %5.1f full %5.1f full %dx%d %5.1f "
+                      "(TIR %s / rest %s)\n",
+            scene.Name.c_str(), size, setting.Label().c_str(), row.Two.Psnr, row.Full.Psnr, ss,
+            ss, row.FullSS.Psnr, Db(row.FullSS.PsnrTir).c_str(),
+            Db(row.FullSS.PsnrRest).c_str());
+          std::fflush(stdout);
         }
-        std::printf("%-10s %4d %-18s %7.2f ms (%.2fx plain %.2f ms)  PSNR two %5.1f full %5.1f  T2 %.2f deg\n",
-          meshName.c_str(), size, setting.Label().c_str(), row.CpuMs, row.CpuMs / row.PlainCpuMs,
-          row.PlainCpuMs, row.Psnr2, row.PsnrF, row.AngMean);
-        std::fflush(stdout);
         rows.push_back(row);
       }
+      vtkRefractionPass::ClearGlass(scene.Actor);
     }
   }
+
+  // Timing: every row `Repeats` times, in one seeded shuffled order; each job times the
+  // glass and then the plain render of the same mesh at the same size.
+  std::vector<std::pair<size_t, int>> jobs;
+  for (size_t r = 0; r < rows.size(); ++r)
+    for (int k = 0; k < options.Repeats; ++k)
+      jobs.emplace_back(r, k);
+  std::mt19937 random(static_cast<unsigned>(options.Seed));
+  std::shuffle(jobs.begin(), jobs.end(), random);
+  std::map<std::string, const Scene*> byName;
+  for (const Scene& scene : scenes)
+    byName[scene.Name] = &scene;
+  struct Samples
+  {
+    std::vector<double> Cpu, Plain, Ratio, Gpu, PlainGpu;
+    std::vector<std::vector<double>> Stages;
+  };
+  std::vector<Samples> samples(rows.size());
+  const double timingStart = elapsed();
+  const std::string loadBefore = LoadAverage();
+  for (size_t j = 0; j < jobs.size(); ++j)
+  {
+    Row& row = rows[jobs[j].first];
+    const Scene& scene = *byName[row.Mesh];
+    Show(window, renderer, scene, row.Size);
+    renderer->SetPass(pass);
+    if (row.Config.Method == "none")
+    {
+      vtkRefractionPass::ClearGlass(scene.Actor); // the pass with nothing to do
+    }
+    else
+    {
+      vtkRefractionPass::MakeGlass(scene.Actor, 1.5);
+      Apply(pass, row.Config);
+    }
+    const Timing glass = TimeFrames(window, pass, options.Frames);
+    vtkRefractionPass::ClearGlass(scene.Actor);
+    renderer->SetPass(nullptr);
+    const Timing plain = TimeFrames(window, nullptr, options.Frames);
+    Samples& s = samples[jobs[j].first];
+    s.Cpu.push_back(glass.Cpu);
+    s.Plain.push_back(plain.Cpu);
+    s.Ratio.push_back(glass.Cpu / plain.Cpu);
+    s.Gpu.push_back(glass.GpuFrame);
+    s.PlainGpu.push_back(plain.GpuFrame);
+    s.Stages.resize(glass.Stages.size());
+    for (size_t k = 0; k < glass.Stages.size(); ++k)
+      s.Stages[k].push_back(glass.Stages[k]);
+    const double done = elapsed() - timingStart;
+    const double eta = done / static_cast<double>(j + 1) * static_cast<double>(jobs.size() - j - 1);
+    std::printf("row %zu of %zu: %-10s %4d %-18s %7.2f ms, plain %6.2f ms, ratio %.2f  "
+                "(elapsed %s, eta %s)\n",
+      j + 1, jobs.size(), row.Mesh.c_str(), row.Size, row.Config.Label().c_str(), glass.Cpu,
+      plain.Cpu, glass.Cpu / plain.Cpu, Clock(elapsed()).c_str(), Clock(eta).c_str());
+    std::fflush(stdout);
+  }
+  for (size_t r = 0; r < rows.size(); ++r)
+  {
+    Row& row = rows[r];
+    const Samples& s = samples[r];
+    row.Repeats = static_cast<int>(s.Cpu.size());
+    row.CpuMs = SpreadOf(s.Cpu);
+    row.PlainCpuMs = SpreadOf(s.Plain);
+    row.Ratio = SpreadOf(s.Ratio);
+    row.GpuFrameMs = Median(s.Gpu);
+    row.PlainGpuMs = Median(s.PlainGpu);
+    row.StageMs.clear();
+    for (const auto& stage : s.Stages)
+    {
+      // A stage the method does not run has no sample (Median gives -1).
+      std::vector<double> ran;
+      for (double v : stage)
+        if (v >= 0.0)
+          ran.push_back(v);
+      row.StageMs.push_back(Median(ran));
+    }
+    row.StageMs.resize(vtkRefractionPass::TIMED_STAGE_COUNT, -1.0);
+  }
+  const std::string loadAfter = LoadAverage();
   renderer->RemoveAllViewProps();
+  std::ostringstream run;
+  run << "Environment: " << environmentDescription << ". Run: " << rows.size() << " rows x " << options.Repeats << " repeats (seed "
+      << options.Seed << "), " << options.Frames << " timed frames each, references "
+      << ss << "x" << ss << " rays per pixel for `SS`; "
+      << (options.Quick ? "--quick preset; " : options.Smoke ? "--smoke preset; " : "")
+      << "took " << Clock(elapsed()) << " (m:s). Machine load (1-minute load average) "
+      << loadBefore << " when the timing began and " << loadAfter << " when it ended, on "
+      << std::thread::hardware_concurrency() << " logical CPUs: a load "
+      << "above the CPU count means other programs shared the cores and every time is "
+      << "inflated by them; compare ratios, not milliseconds.";
   WriteCsv(options.Out + "/results.csv", rows, rendererName);
-  WriteMarkdown(options.Out + "/results.md", rows, rendererName, windowPath, options.Frames);
-  renderer->SetPass(nullptr);
+  WriteMarkdown(options.Out + "/results.md", rows, rendererName, windowPath, run.str());
   WritePareto(window, options.Out + "/pareto.png", rows);
-  std::printf("wrote %s/results.csv, results.md, pareto.png\n", options.Out.c_str());
+  std::printf("wrote %s/results.csv, results.md, pareto.png (%s)\n", options.Out.c_str(),
+    Clock(elapsed()).c_str());
   return 0;
 }

@@ -539,37 +539,84 @@ static void rf_store_vec3(float* array, size_t index, rf_vec3 v)
   }
 }
 
-static void rf_trace_pixel(const rf_tracer* tr, int i, int j)
+/* Shades the primary ray through NDC (x, y): from the near plane to the far plane. */
+static void rf_trace_primary(const rf_tracer* tr, double x, double y, rf_pixel* px)
 {
-  rf_trace_image* out = tr->out;
-  const size_t index = (size_t)j * (size_t)out->width + (size_t)i;
-  /* OpenGL's pixel centres (rasterization samples at the centre). */
-  const double x = (i + 0.5) / out->width * 2.0 - 1.0;
-  const double y = (j + 0.5) / out->height * 2.0 - 1.0;
   const rf_vec3 near_view = rf_mat4_project(tr->clip_to_view, x, y, -1.0, 1.0);
   const rf_vec3 far_view = rf_mat4_project(tr->clip_to_view, x, y, 1.0, 1.0);
   const rf_vec3 near_world = rf_mat4_point(tr->view_to_world, near_view);
   const rf_vec3 far_world = rf_mat4_point(tr->view_to_world, far_view);
   const rf_vec3 span = rf_vec3_sub(far_world, near_world);
   const rf_vec3 dir = rf_vec3_normalize(span);
-  rf_pixel px;
-  memset(&px, 0, sizeof(px));
+  memset(px, 0, sizeof(*px));
   if (rf_vec3_length(dir) > 0.0)
   {
     if (tr->options->mode == RF_TRACE_FULL)
     {
-      rf_shade_full(tr, near_world, dir, rf_vec3_length(span), &px);
+      rf_shade_full(tr, near_world, dir, rf_vec3_length(span), px);
     }
     else
     {
-      rf_shade_two_interface(tr, near_world, dir, rf_vec3_length(span), &px);
+      rf_shade_two_interface(tr, near_world, dir, rf_vec3_length(span), px);
     }
+  }
+}
+
+static void rf_trace_pixel(const rf_tracer* tr, int i, int j)
+{
+  rf_trace_image* out = tr->out;
+  const size_t index = (size_t)j * (size_t)out->width + (size_t)i;
+  const int n = tr->options->samples_per_side;
+  rf_pixel px;
+  double colour[3];
+  double coverage;
+  int c;
+  /* OpenGL's pixel centres (rasterization samples at the centre). */
+  rf_trace_primary(
+    tr, (i + 0.5) / out->width * 2.0 - 1.0, (j + 0.5) / out->height * 2.0 - 1.0, &px);
+  for (c = 0; c < 3; ++c)
+  {
+    colour[c] = px.colour[c];
+  }
+  coverage = px.hit ? 1.0 : 0.0;
+  if (n > 1)
+  {
+    int a;
+    int b;
+    int hits = 0;
+    for (c = 0; c < 3; ++c)
+    {
+      colour[c] = 0.0;
+    }
+    for (b = 0; b < n; ++b)
+    {
+      for (a = 0; a < n; ++a)
+      {
+        rf_pixel sample;
+        rf_trace_primary(tr, (i + (a + 0.5) / n) / out->width * 2.0 - 1.0,
+          (j + (b + 0.5) / n) / out->height * 2.0 - 1.0, &sample);
+        hits += sample.hit;
+        for (c = 0; c < 3; ++c)
+        {
+          colour[c] += sample.hit ? sample.colour[c] : tr->options->background[c];
+        }
+      }
+    }
+    for (c = 0; c < 3; ++c)
+    {
+      colour[c] /= (double)(n * n);
+    }
+    coverage = (double)hits / (double)(n * n);
   }
   if (out->colour != NULL)
   {
-    out->colour[3 * index + 0] = (float)px.colour[0];
-    out->colour[3 * index + 1] = (float)px.colour[1];
-    out->colour[3 * index + 2] = (float)px.colour[2];
+    out->colour[3 * index + 0] = (float)colour[0];
+    out->colour[3 * index + 1] = (float)colour[1];
+    out->colour[3 * index + 2] = (float)colour[2];
+  }
+  if (out->coverage != NULL)
+  {
+    out->coverage[index] = (float)coverage;
   }
   if (px.hit)
   {
@@ -607,6 +654,7 @@ typedef struct rf_worker
   const rf_tracer* tracer;
   int first_row;
   int row_step;
+  int report_progress; /* the worker on the calling thread */
 } rf_worker;
 
 /* Rows are interleaved over the workers so that each gets a similar share of the object. */
@@ -622,6 +670,12 @@ static void* rf_worker_run(void* arg)
     for (i = 0; i < width; ++i)
     {
       rf_trace_pixel(w->tracer, i, j);
+    }
+    /* Rows are interleaved, so the calling thread's share of rows stands for all of them. */
+    if (w->report_progress && w->tracer->options->progress != NULL)
+    {
+      w->tracer->options->progress(
+        (double)(j + 1) / (double)height, w->tracer->options->progress_user);
     }
   }
   return NULL;
@@ -650,6 +704,7 @@ static rf_status rf_run_workers(const rf_tracer* tr, int threads)
     workers[k].tracer = tr;
     workers[k].first_row = k;
     workers[k].row_step = threads;
+    workers[k].report_progress = k == 0;
   }
   /* Worker 0 runs on the calling thread; a worker that cannot be started is run there too. */
   for (k = 1; k < threads; ++k)
@@ -757,9 +812,14 @@ static rf_status rf_validate_inputs(const rf_mesh* meshes, size_t mesh_count,
   }
   if ((options->mode != RF_TRACE_TWO_INTERFACE && options->mode != RF_TRACE_FULL) ||
     options->max_depth < 1 || options->max_depth > RF_TRACE_MAX_DEPTH_LIMIT ||
-    options->threads < 1)
+    options->threads < 1 || options->samples_per_side < 1 ||
+    options->samples_per_side > RF_TRACE_MAX_SAMPLES_PER_SIDE)
   {
     return RF_REF_ERR_BAD_OPTION;
+  }
+  if (!rf_all_finite(options->background, 3))
+  {
+    return RF_ERR_NOT_FINITE;
   }
   if (camera->width <= 0 || camera->height <= 0 || camera->width > RF_MAX_IMAGE_SIDE ||
     camera->height > RF_MAX_IMAGE_SIDE || out->width != camera->width ||
@@ -911,6 +971,12 @@ rf_status rf_trace_options_default(rf_trace_options* options)
   options->threads = 2;
   options->environment = NULL;
   options->environment_user = NULL;
+  options->samples_per_side = 1;
+  options->background[0] = 0.0;
+  options->background[1] = 0.0;
+  options->background[2] = 0.0;
+  options->progress = NULL;
+  options->progress_user = NULL;
   return RF_OK;
 }
 
@@ -930,6 +996,7 @@ rf_status rf_trace_image_alloc(rf_trace_image* img, int w, int h)
   img->width = w;
   img->height = h;
   img->colour = (float*)calloc(3 * n, sizeof(float));
+  img->coverage = (float*)calloc(n, sizeof(float));
   img->p1 = (float*)calloc(3 * n, sizeof(float));
   img->p2 = (float*)calloc(3 * n, sizeof(float));
   img->t2 = (float*)calloc(3 * n, sizeof(float));
@@ -937,7 +1004,7 @@ rf_status rf_trace_image_alloc(rf_trace_image* img, int w, int h)
   img->bounces = (int*)calloc(n, sizeof(int));
   img->tir = (unsigned char*)calloc(n, 1);
   img->hit = (unsigned char*)calloc(n, 1);
-  if (img->colour == NULL || img->p1 == NULL || img->p2 == NULL || img->t2 == NULL ||
+  if (img->colour == NULL || img->coverage == NULL || img->p1 == NULL || img->p2 == NULL || img->t2 == NULL ||
     img->thickness == NULL || img->bounces == NULL || img->tir == NULL || img->hit == NULL)
   {
     rf_trace_image_free(img);
@@ -953,6 +1020,7 @@ void rf_trace_image_free(rf_trace_image* img)
     return;
   }
   free(img->colour);
+  free(img->coverage);
   free(img->p1);
   free(img->p2);
   free(img->t2);

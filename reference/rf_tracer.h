@@ -47,6 +47,8 @@ extern "C" {
 #define RF_TRACE_MIN_WEIGHT 1e-4
 /* Largest accepted max_depth (the recursion uses the C stack). */
 #define RF_TRACE_MAX_DEPTH_LIMIT 64
+/* Largest accepted samples_per_side (256 rays per pixel). */
+#define RF_TRACE_MAX_SAMPLES_PER_SIDE 16
 
 /* One glass object. Triangles index positions (and normals, when given). */
 typedef struct rf_mesh
@@ -78,6 +80,9 @@ typedef enum rf_trace_mode
  * every worker thread at once: it must be safe for that (a pure function of its inputs). */
 typedef void (*rf_environment_fn)(const double direction_world[3], double rgb[3], void* user);
 
+/* Progress of a trace, fraction in [0, 1]; called on the thread that called rf_trace only. */
+typedef void (*rf_progress_fn)(double fraction, void* user);
+
 typedef struct rf_trace_options
 {
   rf_trace_mode mode;
@@ -88,15 +93,27 @@ typedef struct rf_trace_options
   int threads;   /* worker threads (rows are interleaved over them), >= 1 */
   rf_environment_fn environment; /* NULL: rf_builtin_environment */
   void* environment_user;        /* passed to environment */
+  /* Anti-aliased truth: 1 shades the pixel centre (what the pass shades); N > 1 shades an
+   * N x N grid of sub-pixel positions ((i + (a + 0.5) / N, j + (b + 0.5) / N)) and averages
+   * their colours, as a camera integrates over the pixel. 1..RF_TRACE_MAX_SAMPLES_PER_SIDE. */
+  int samples_per_side;
+  /* The colour of sub-samples that see no glass (the renderer's background); only used when
+   * samples_per_side > 1 (with one sample a pixel without glass is 0, as before). */
+  double background[3];
+  rf_progress_fn progress; /* NULL: none; called after each row of the calling thread */
+  void* progress_user;     /* passed to progress */
 } rf_trace_options;
 
 /* Per-pixel results; every array is optional (NULL: not written) except as noted.
- *  colour     3 floats, linear RGB, 0 where no glass is seen;
+ *  colour     3 floats, linear RGB, 0 where no glass is seen; with samples_per_side > 1
+ *             the average over the sub-samples (the background where they miss the glass);
+ *  coverage   share of the sub-samples that see glass (with one sample: hit);
  *  p1, p2, t2 3 floats, VIEW space: entry point, exit point, exit direction (unit);
  *  thickness  |P2 - P1| (two-interface), length travelled inside glass (full);
  *  bounces    interfaces on the (dominant) path; 0 where no glass is seen;
  *  tir        1 where TIR occurred at the exit (two-interface) or on the dominant path (full);
  *  hit        1 where glass is seen.
+ * Everything but colour and coverage is the pixel centre's, whatever samples_per_side.
  * In the full mode p2, t2, thickness, bounces and tir describe the dominant path, the one
  * that transmits at every interface where it can (reflects only under TIR): the path the
  * two-interface model approximates. p2 is where it last leaves the glass, t2 its
@@ -105,6 +122,7 @@ typedef struct rf_trace_image
 {
   int width, height;
   float* colour;
+  float* coverage;
   float* p1;
   float* p2;
   float* t2;
@@ -115,7 +133,7 @@ typedef struct rf_trace_image
 } rf_trace_image;
 
 /* Defaults: two-interface, tir_clamp 1 (the paper), max_depth 8, fresnel 1, threads 2,
- * the built-in environment. */
+ * the built-in environment, one sample per pixel, black background, no progress. */
 RF_REFERENCE_EXPORT rf_status rf_trace_options_default(rf_trace_options* options);
 
 /* Allocates every array of img for w x h pixels, zeroed. On failure img holds no memory.

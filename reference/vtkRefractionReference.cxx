@@ -1,5 +1,6 @@
 #include "vtkRefractionReference.h"
 
+#include "rf_environment_map.h"
 #include "rf_tracer.h"
 #include "vtkRefractionPass.h"
 
@@ -7,6 +8,8 @@
 #include <vtkActorCollection.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCommand.h>
+#include <vtkEquirectangularToCubeMapTexture.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
@@ -18,12 +21,15 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
+#include <vtkTexture.h>
 #include <vtkTriangleFilter.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkRefractionReference);
@@ -46,6 +52,238 @@ struct ImageHolder
   ~ImageHolder() { rf_trace_image_free(&this->Image); }
 };
 
+// The environment the tracer samples, with the texels it points into.
+struct EnvironmentHolder
+{
+  std::vector<float> Texels[6];
+  rf_environment_map Map = {};
+  bool Use = false; // false: the built-in environment
+};
+
+double SrgbToLinear(double c)
+{
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+// A 2D image's scalars as linear RGB floats, as a texture with direct scalars hands them to
+// GL: floats raw, unsigned 8 and 16 bit normalized (8 bit decoded from sRGB when asked).
+bool ImageToRgb(vtkImageData* image, bool srgb, std::vector<float>& rgb, int size[2],
+  std::string& error)
+{
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  if (!scalars)
+  {
+    error = "has no image or no point scalars";
+    return false;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  const int components = scalars->GetNumberOfComponents();
+  if (dims[0] < 1 || dims[1] < 1 || dims[2] != 1)
+  {
+    error = "is not a 2D image";
+    return false;
+  }
+  if (components < 1 || components > 4)
+  {
+    error = "has " + std::to_string(components) + " components (1 to 4 expected)";
+    return false;
+  }
+  double scale = 1.0;
+  switch (scalars->GetDataType())
+  {
+    case VTK_FLOAT:
+    case VTK_DOUBLE:
+      srgb = false;
+      break;
+    case VTK_UNSIGNED_CHAR:
+      scale = 1.0 / 255.0;
+      break;
+    case VTK_UNSIGNED_SHORT:
+      scale = 1.0 / 65535.0;
+      srgb = false;
+      break;
+    default:
+      error = std::string("has scalars of type ") + scalars->GetDataTypeAsString() +
+        " (float, double, unsigned char or unsigned short expected)";
+      return false;
+  }
+  const vtkIdType count = static_cast<vtkIdType>(dims[0]) * dims[1];
+  rgb.resize(3 * static_cast<size_t>(count));
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      // Grey images (1 or 2 components) give the same value in every channel.
+      double value = scalars->GetComponent(i, components < 3 ? 0 : c) * scale;
+      if (!std::isfinite(value))
+      {
+        error = "has a non-finite texel (id " + std::to_string(i) + ")";
+        return false;
+      }
+      rgb[3 * i + c] = static_cast<float>(srgb ? SrgbToLinear(value) : value);
+    }
+  }
+  size[0] = dims[0];
+  size[1] = dims[1];
+  return true;
+}
+
+// The image on a texture's input port k (a cube map has one port per face), up to date.
+vtkImageData* TextureInput(vtkTexture* texture, int k)
+{
+  if (texture->GetNumberOfInputPorts() <= k || texture->GetNumberOfInputConnections(k) < 1)
+  {
+    return nullptr;
+  }
+  if (vtkAlgorithm* producer = texture->GetInputAlgorithm(k, 0))
+  {
+    producer->Update();
+  }
+  return vtkImageData::SafeDownCast(texture->GetInputDataObject(k, 0));
+}
+
+// Fills env with what the pass samples (see the class comment); false with a message in
+// error. A warning is for what the reference cannot reproduce.
+bool PrepareEnvironment(vtkRenderer* renderer, vtkImageData* explicitImage,
+  EnvironmentHolder& env, std::string& description, std::string& error, std::string& warning)
+{
+  double up[3];
+  double right[3];
+  renderer->GetEnvironmentUp(up);
+  renderer->GetEnvironmentRight(right);
+  if (rf_environment_map_frame(up, right, env.Map.frame) != RF_OK)
+  {
+    std::ostringstream message;
+    message << "The renderer's EnvironmentUp (" << up[0] << ", " << up[1] << ", " << up[2]
+      << ") and EnvironmentRight (" << right[0] << ", " << right[1] << ", " << right[2]
+      << ") do not span a frame.";
+    error = message.str();
+    return false;
+  }
+  env.Map.linear = 1;
+  env.Map.repeat = 1;
+  std::string problem;
+  int size[2] = { 0, 0 };
+  if (explicitImage)
+  {
+    if (!ImageToRgb(explicitImage, false, env.Texels[0], size, problem))
+    {
+      std::ostringstream message;
+      message << "The environment image " << problem << ".";
+      error = message.str();
+      return false;
+    }
+    env.Map.layout = RF_ENVIRONMENT_LATLONG;
+    env.Map.width = size[0];
+    env.Map.height = size[1];
+    env.Map.texels[0] = env.Texels[0].data();
+    env.Use = true;
+    description = "lat-long image " + std::to_string(size[0]) + "x" +
+      std::to_string(size[1]) + " (bilinear)";
+    return true;
+  }
+  vtkTexture* texture = renderer->GetEnvironmentTexture();
+  if (!texture || !texture->GetCubeMap())
+  {
+    // What the pass falls back to (it warns about a texture that is not a cube map).
+    description = "built-in";
+    return true;
+  }
+  auto* equirectangular = vtkEquirectangularToCubeMapTexture::SafeDownCast(texture);
+  vtkTexture* source = equirectangular ? equirectangular->GetInputTexture() : texture;
+  if (!source)
+  {
+    std::ostringstream message;
+    message << "The renderer's vtkEquirectangularToCubeMapTexture has no input texture.";
+    error = message.str();
+    return false;
+  }
+  const bool srgb = source->GetUseSRGBColorSpace();
+  const int images = equirectangular ? 1 : 6;
+  for (int k = 0; k < images; ++k)
+  {
+    vtkImageData* image = TextureInput(source, k);
+    int faceSize[2] = { 0, 0 };
+    if (!ImageToRgb(image, srgb, env.Texels[k], faceSize, problem))
+    {
+      std::ostringstream message;
+      message << "The renderer's environment texture (input " << k << ") " << problem << ".";
+      error = message.str();
+      return false;
+    }
+    if (source->GetColorMode() != VTK_COLOR_MODE_DIRECT_SCALARS &&
+      image->GetPointData()->GetScalars()->GetDataType() != VTK_UNSIGNED_CHAR)
+    {
+      warning = "The renderer's environment texture maps its scalars through a lookup table "
+                "(SetColorModeToDirectScalars is not set); the reference uses them as they "
+                "are: the pass's colours will differ.";
+    }
+    if (k > 0 && (faceSize[0] != size[0] || faceSize[1] != size[1]))
+    {
+      std::ostringstream message;
+      message << "The renderer's cube map faces differ in size.";
+      error = message.str();
+      return false;
+    }
+    size[0] = faceSize[0];
+    size[1] = faceSize[1];
+  }
+  env.Map.linear = source->GetInterpolate() ? 1 : 0;
+  env.Map.repeat = source->GetRepeat() && !source->GetEdgeClamp() ? 1 : 0;
+  if (equirectangular)
+  {
+    rf_environment_map latlong = env.Map;
+    latlong.layout = RF_ENVIRONMENT_LATLONG;
+    latlong.width = size[0];
+    latlong.height = size[1];
+    latlong.texels[0] = env.Texels[0].data();
+    const int side = equirectangular->GetCubeMapSize();
+    float* faces[6];
+    std::vector<float> latlongTexels;
+    latlongTexels.swap(env.Texels[0]);
+    latlong.texels[0] = latlongTexels.data();
+    for (int k = 0; k < 6; ++k)
+    {
+      env.Texels[k].assign(3 * static_cast<size_t>(side) * side, 0.f);
+      faces[k] = env.Texels[k].data();
+    }
+    if (rf_environment_cube_from_latlong(&latlong, side, faces) != RF_OK)
+    {
+      std::ostringstream message;
+      message << "Cannot resample the lat-long environment into a " << side << " cube map.";
+      error = message.str();
+      return false;
+    }
+    // VTK renders its cube map with linear filtering whatever the input texture says.
+    env.Map.linear = 1;
+    size[0] = size[1] = side;
+    description = "cube map " + std::to_string(side) +
+      " from a lat-long image " + std::to_string(latlong.width) + "x" +
+      std::to_string(latlong.height) + " (vtkEquirectangularToCubeMapTexture)";
+  }
+  else
+  {
+    if (size[0] != size[1])
+    {
+      std::ostringstream message;
+      message << "The renderer's cube map faces are not square.";
+      error = message.str();
+      return false;
+    }
+    description = "cube map " + std::to_string(size[0]) + " (six images)";
+  }
+  env.Map.layout = RF_ENVIRONMENT_CUBE;
+  env.Map.width = size[0];
+  env.Map.height = size[1];
+  for (int k = 0; k < 6; ++k)
+  {
+    env.Map.texels[k] = env.Texels[k].data();
+  }
+  env.Use = true;
+  return true;
+}
+
 vtkSmartPointer<vtkFloatArray> MakeArray(const char* name, int components, vtkIdType tuples)
 {
   auto array = vtkSmartPointer<vtkFloatArray>::New();
@@ -59,6 +297,23 @@ vtkSmartPointer<vtkFloatArray> MakeArray(const char* name, int components, vtkId
 //------------------------------------------------------------------------------
 vtkRefractionReference::vtkRefractionReference() = default;
 vtkRefractionReference::~vtkRefractionReference() = default;
+
+//------------------------------------------------------------------------------
+void vtkRefractionReference::SetEnvironmentImage(vtkImageData* image)
+{
+  if (this->EnvironmentImage != image)
+  {
+    this->EnvironmentImage = image;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkRefractionReference::GetEnvironmentImage()
+{
+  return this->EnvironmentImage;
+}
+
 
 //------------------------------------------------------------------------------
 vtkImageData* vtkRefractionReference::GetOutput()
@@ -279,6 +534,31 @@ bool vtkRefractionReference::Trace(vtkRenderer* renderer, int width, int height)
   options.max_depth = this->MaxDepth;
   options.fresnel = this->Fresnel ? 1 : 0;
   options.threads = this->Threads;
+  options.samples_per_side = this->SamplesPerSide;
+  renderer->GetBackground(options.background);
+
+  EnvironmentHolder environment;
+  std::string environmentError;
+  std::string environmentWarning;
+  if (!PrepareEnvironment(renderer, this->EnvironmentImage, environment,
+        this->EnvironmentDescription, environmentError, environmentWarning))
+  {
+    vtkErrorMacro(<< environmentError);
+    return false;
+  }
+  if (!environmentWarning.empty())
+  {
+    vtkWarningMacro(<< environmentWarning);
+  }
+  if (environment.Use)
+  {
+    options.environment = rf_environment_map_lookup;
+    options.environment_user = &environment.Map;
+  }
+  options.progress = [](double fraction, void* self) {
+    static_cast<vtkRefractionReference*>(self)->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
+  };
+  options.progress_user = this;
 
   ImageHolder holder;
   rf_status status = rf_trace_image_alloc(&holder.Image, width, height);
@@ -287,10 +567,19 @@ bool vtkRefractionReference::Trace(vtkRenderer* renderer, int width, int height)
     vtkErrorMacro("Cannot allocate the image: " << rf_reference_status_message(status));
     return false;
   }
+  double fraction = 0.0;
+  this->InvokeEvent(vtkCommand::StartEvent);
+  this->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
   const auto start = std::chrono::steady_clock::now();
   status = rf_trace(meshes.data(), meshes.size(), &rfCamera, &options, &holder.Image);
   this->TraceSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (status == RF_OK)
+  {
+    fraction = 1.0;
+    this->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
+  }
+  this->InvokeEvent(vtkCommand::EndEvent);
   if (status != RF_OK)
   {
     vtkErrorMacro("Tracing failed: " << rf_reference_status_message(status));
@@ -300,6 +589,7 @@ bool vtkRefractionReference::Trace(vtkRenderer* renderer, int width, int height)
   const vtkIdType count = static_cast<vtkIdType>(width) * height;
   const rf_trace_image& img = holder.Image;
   auto colour = MakeArray("Colour", 3, count);
+  auto coverage = MakeArray("Coverage", 1, count);
   auto p1 = MakeArray("P1", 3, count);
   auto p2 = MakeArray("P2", 3, count);
   auto t2 = MakeArray("T2", 3, count);
@@ -309,6 +599,7 @@ bool vtkRefractionReference::Trace(vtkRenderer* renderer, int width, int height)
   auto hit = MakeArray("Hit", 1, count);
   auto flags = MakeArray("Flags", 1, count);
   std::copy(img.colour, img.colour + 3 * count, colour->GetPointer(0));
+  std::copy(img.coverage, img.coverage + count, coverage->GetPointer(0));
   std::copy(img.p1, img.p1 + 3 * count, p1->GetPointer(0));
   std::copy(img.p2, img.p2 + 3 * count, p2->GetPointer(0));
   std::copy(img.t2, img.t2 + 3 * count, t2->GetPointer(0));
@@ -322,7 +613,7 @@ bool vtkRefractionReference::Trace(vtkRenderer* renderer, int width, int height)
   }
   auto output = vtkSmartPointer<vtkImageData>::New();
   output->SetDimensions(width, height, 1);
-  for (vtkFloatArray* array : { colour.Get(), p1.Get(), p2.Get(), t2.Get(), thickness.Get(),
+  for (vtkFloatArray* array : { colour.Get(), coverage.Get(), p1.Get(), p2.Get(), t2.Get(), thickness.Get(),
          bounces.Get(), tir.Get(), hit.Get(), flags.Get() })
   {
     output->GetPointData()->AddArray(array);
@@ -350,6 +641,9 @@ void vtkRefractionReference::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Threads: " << this->Threads << "\n";
   os << indent << "Absorption: " << this->Absorption[0] << " " << this->Absorption[1] << " "
      << this->Absorption[2] << "\n";
+  os << indent << "SamplesPerSide: " << this->SamplesPerSide << "\n";
+  os << indent << "EnvironmentImage: " << this->EnvironmentImage.Get() << "\n";
+  os << indent << "EnvironmentDescription: " << this->EnvironmentDescription << "\n";
   os << indent << "GlassDiagonal: " << this->GlassDiagonal << "\n";
   os << indent << "NumberOfGlassActors: " << this->NumberOfGlassActors << "\n";
   os << indent << "NumberOfTriangles: " << this->NumberOfTriangles << "\n";

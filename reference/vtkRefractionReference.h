@@ -18,8 +18,21 @@
  * "Thickness", "Bounces", "TIR", "Hit", and "Flags" (0 no glass, 1 glass, 2 glass with
  * TIR), named as in vtkRefractionPass::GetDebugImage() where they overlap.
  *
- * The environment is the built-in one (rf_builtin_environment, the pass's fallback); a cube
- * map set on the renderer is not used, so compare such scenes by T2 and P2, not by colour.
+ * The environment is the one the pass samples: the renderer's environment texture when it
+ * is a cube map (a vtkEquirectangularToCubeMapTexture is resampled from its lat-long input
+ * into a cube of its CubeMapSize, as VTK renders it; a vtkTexture with CubeMapOn is read
+ * from its six inputs), looked up through the renderer's EnvironmentUp and
+ * EnvironmentRight exactly as the shader does (rf_environment_map.h); otherwise the
+ * built-in one (rf_builtin_environment, the pass's fallback). SetEnvironmentImage gives a
+ * lat-long image instead, sampled directly (the environment itself, without the cube map's
+ * resampling). Texel values are used as they are (floats raw, 8 and 16 bit normalized,
+ * 8 bit sRGB decoded when the texture says so), as a texture with direct scalars is.
+ *
+ * SamplesPerSide N > 1 shades N x N sub-pixel positions and averages them (sub-samples
+ * that miss the glass take the renderer's background colour): the anti-aliased truth a
+ * camera sees. "Coverage" holds the share of sub-samples on glass; everything else is the
+ * pixel centre's. Trace reports its progress through vtkCommand::ProgressEvent (call data:
+ * a double in [0, 1]).
  * Glass far from the origin is traced relative to its centre (subtracted in double), so
  * offsets such as 1e7 keep full float precision, as VTK's mappers do on the GPU.
  *
@@ -36,8 +49,11 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For members
 
+#include <string> // For members
+
 class vtkImageData;
 class vtkRenderer;
+class vtkTexture;
 
 class RF_REFERENCE_EXPORT vtkRefractionReference : public vtkObject
 {
@@ -86,6 +102,24 @@ public:
   ///@}
 
   ///@{
+  /// Rays per pixel along each side: 1 (the default) shades the pixel centre as the pass
+  /// does; N shades an N x N grid and averages (1..16).
+  vtkSetClampMacro(SamplesPerSide, int, 1, 16);
+  vtkGetMacro(SamplesPerSide, int);
+  ///@}
+
+  ///@{
+  /// An explicit lat-long environment (2D image, 1 to 4 components; rows from the bottom,
+  /// as VTK reads images), sampled bilinearly with repeat, in the renderer's
+  /// EnvironmentUp/EnvironmentRight frame. nullptr (the default): the renderer's.
+  void SetEnvironmentImage(vtkImageData* image);
+  vtkImageData* GetEnvironmentImage();
+  ///@}
+
+  /// What the last Trace looked the environment up in, in words.
+  const char* GetEnvironmentDescription() { return this->EnvironmentDescription.c_str(); }
+
+  ///@{
   /// Beer-Lambert absorption per unit length (world units) of every glass actor, per
   /// colour channel; 0 (clear glass, the default) is what the pass draws.
   vtkSetVector3Macro(Absorption, double);
@@ -121,6 +155,9 @@ protected:
   bool Fresnel = true;
   int Threads = 2;
   double Absorption[3] = { 0.0, 0.0, 0.0 };
+  int SamplesPerSide = 1;
+  vtkSmartPointer<vtkImageData> EnvironmentImage;
+  std::string EnvironmentDescription = "none traced yet";
 
   double GlassDiagonal = 0.0;
   int NumberOfGlassActors = 0;

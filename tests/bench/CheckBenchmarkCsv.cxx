@@ -1,5 +1,8 @@
 // Checks a benchmark CSV: every figure finite, and DIR's PSNR against the two-interface
-// reference on the sphere above a measured threshold.
+// reference on the sphere above a measured threshold; every row timed at least 3 times with
+// its median inside its min/max; the supersampled reference in its own columns, and DIR's
+// error against it larger than against the one-sample reference (both share the aliasing
+// that the supersampled truth does not have).
 //   CheckBenchmarkCsv results.csv MIN_DIR_SPHERE_PSNR
 #include <cmath>
 #include <cstdio>
@@ -55,6 +58,14 @@ int main(int argc, char* argv[])
         return static_cast<int>(i);
     return -1;
   };
+  const int repeats = column("repeats"), ratio = column("cpu_ratio"),
+            ratioMin = column("cpu_ratio_min"), ratioMax = column("cpu_ratio_max"),
+            psnrFullSS = column("psnr_full_ss"), psnrFull = column("psnr_full");
+  if (repeats < 0 || ratio < 0 || ratioMin < 0 || ratioMax < 0 || psnrFullSS < 0 || psnrFull < 0)
+  {
+    std::fprintf(stderr, "missing repeat, spread or supersampled-reference columns\n");
+    return 1;
+  }
   const int mesh = column("mesh"), method = column("method"), steps = column("steps"),
             range = column("depth_range"), adaptive = column("adaptive"),
             psnr = column("psnr_two"), back = column("back_surface"), secant = column("secant");
@@ -91,6 +102,14 @@ int main(int argc, char* argv[])
         ++failures;
       }
     }
+    const double r = std::atof(f[ratio].c_str());
+    if (std::atoi(f[repeats].c_str()) < 3 || !(std::atof(f[ratioMin].c_str()) <= r) ||
+      !(r <= std::atof(f[ratioMax].c_str())) || !(r > 0.0))
+    {
+      std::fprintf(stderr, "row %d: fewer than 3 repeats, or the median ratio %g outside "
+                           "[%s, %s]\n", rows, r, f[ratioMin].c_str(), f[ratioMax].c_str());
+      ++failures;
+    }
     if (f[mesh] == "sphere" && f[method] == "DIR" && f[steps] == "5" && f[range] == "reduction" &&
       f[adaptive] == "0" && f[back] == "furthest" && f[secant] == "1")
     {
@@ -100,6 +119,15 @@ int main(int argc, char* argv[])
                   "(minimum %.2f)\n", value, minimum);
       if (!(value >= minimum))
         ++failures;
+      const double full = std::atof(f[psnrFull].c_str());
+      const double fullSS = std::atof(f[psnrFullSS].c_str());
+      std::printf("  against the full reference %.2f dB, supersampled %.2f dB\n", full, fullSS);
+      if (!(fullSS < full))
+      {
+        std::fprintf(stderr, "DIR reads no worse against the supersampled truth than against "
+                             "the one-sample reference: the supersampling had no effect\n");
+        ++failures;
+      }
     }
   }
   if (sawDir != 1)

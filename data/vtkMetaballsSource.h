@@ -35,9 +35,9 @@
 #define vtkMetaballsSource_h
 
 #include "vtkImageAlgorithm.h"
-#include "vtkRenderingRefractionModule.h" // For export macro
+#include "vtkRefractionDataModule.h" // For export macro
 
-class VTKRENDERINGREFRACTION_EXPORT vtkMetaballsSource : public vtkImageAlgorithm
+class VTKREFRACTIONDATA_EXPORT vtkMetaballsSource : public vtkImageAlgorithm
 {
 public:
   static vtkMetaballsSource* New();

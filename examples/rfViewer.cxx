@@ -1,0 +1,1372 @@
+// RefractionViewer: any mesh VTK reads, or a time series of them, optionally contoured, drawn
+// as refractive glass; interactive in a window, or headless (EGL, no X server) writing a
+// screenshot, a numbered PNG sequence, a contact sheet and frame times. `--help` says it all.
+#include "rfViewer.h"
+
+#include "vtkISRDistanceFilter.h"
+#include "vtkMetaballsSource.h"
+#include "vtkRefractionEGL.h"
+#include "vtkRefractionPass.h"
+#include "vtkRefractionSeriesReader.h"
+#include "vtkWaveEquationSource.h"
+#ifdef REFRACTION_HAVE_IO
+#include "vtkRefractionImageIO.h"
+#endif
+
+#include <vtkActor.h>
+#include <vtkBoundingBox.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkConeSource.h>
+#include <vtkContourFilter.h>
+#include <vtkDataSet.h>
+#include <vtkDataSetSurfaceFilter.h>
+#include <vtkFlyingEdges3D.h>
+#include <vtkImageAppend.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkSkybox.h>
+#include <vtkSmartPointer.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkTexture.h>
+#include <vtkTimerLog.h>
+#include <vtkWindowToImageFilter.h>
+#include <vtk_glew.h>
+#include <vtksys/CommandLineArguments.hxx>
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <unistd.h>
+
+namespace
+{
+const char* const kProgram = "RefractionViewer";
+
+struct Options
+{
+  std::vector<std::string> Inputs;
+  bool Series = false;
+  std::string Demo;
+  std::string Contour;
+  std::string Array;
+  std::string Environment;
+  std::string Background = "0.12,0.12,0.14,0.35,0.45,0.6";
+  std::string Method = "dir";
+  std::string IOR = "1.5";
+  std::string Steps = "5";
+  std::string Size = "512";
+  std::string Frames;
+  std::string Time;
+  std::string OutDir;
+  std::string Screenshot;
+  std::string ContactSheet;
+  std::string SheetColumns = "4";
+  std::string SheetFrames = "8";
+  std::string Orbit = "0";
+  std::string Azimuth = "0";
+  std::string Elevation = "20";
+  std::string Zoom = "1.1";
+  std::string Timing = "0";
+  bool Interactive = false;
+  bool NoText = false;
+  bool Masks = false;
+  bool Help = false;
+  bool EGL = false; // accepted for older scripts: headless rendering always tries EGL first
+};
+
+// The checked values.
+struct Settings
+{
+  int Method = vtkRefractionPass::DIR;
+  double IOR = 1.5;
+  int Steps = 5;
+  int Width = 512;
+  int Height = 512;
+  int Frames = -1; // -1: every time step (or one frame of a static mesh)
+  bool HaveTime = false;
+  double Time = 0.0;
+  std::vector<double> ContourValues;
+  double Background[6] = { 0, 0, 0, 0, 0, 0 };
+  bool Gradient = false;
+  int SheetColumns = 4;
+  int SheetFrames = 8;
+  double Orbit = 0.0;
+  double Azimuth = 0.0;
+  double Elevation = 20.0;
+  double Zoom = 1.1;
+  int Timing = 0;
+};
+
+int Usage(const std::string& message)
+{
+  std::fprintf(stderr, "%s: %s (see %s --help)\n", kProgram, message.c_str(), kProgram);
+  return RF_VIEWER_USAGE;
+}
+
+int BadInput(const std::string& message)
+{
+  std::fprintf(stderr, "%s: %s\n", kProgram, message.c_str());
+  return RF_VIEWER_BAD_INPUT;
+}
+
+bool ParseDouble(const std::string& text, double low, double high, double& value)
+{
+  if (text.empty())
+  {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const double parsed = std::strtod(text.c_str(), &end);
+  if (errno != 0 || *end != '\0' || !std::isfinite(parsed) || parsed < low || parsed > high)
+  {
+    return false;
+  }
+  value = parsed;
+  return true;
+}
+
+bool ParseInt(const std::string& text, int low, int high, int& value)
+{
+  if (text.empty())
+  {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const long parsed = std::strtol(text.c_str(), &end, 10);
+  if (errno != 0 || *end != '\0' || parsed < low || parsed > high)
+  {
+    return false;
+  }
+  value = static_cast<int>(parsed);
+  return true;
+}
+
+bool ParseList(const std::string& text, std::vector<double>& values)
+{
+  values.clear();
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ','))
+  {
+    double value = 0.0;
+    if (!ParseDouble(item, -1e300, 1e300, value))
+    {
+      return false;
+    }
+    values.push_back(value);
+  }
+  return !values.empty();
+}
+
+std::string Quote(const std::string& text)
+{
+  return "'" + text + "'";
+}
+
+const char* MethodName(int method)
+{
+  static const char* const names[] = { "SIR", "DIR", "ISR", "SSP" };
+  return names[method];
+}
+
+// "  --name VALUE         help text wrapped at 92 columns"
+std::string Wrap(const std::string& name, const std::string& help)
+{
+  const size_t column = 26;
+  const size_t width = 92;
+  std::string out = "  " + name;
+  out += out.size() + 1 < column ? std::string(column - out.size(), ' ') : "\n" + std::string(column, ' ');
+  size_t lineLength = column;
+  std::stringstream words(help);
+  std::string word;
+  bool first = true;
+  while (words >> word)
+  {
+    if (!first && lineLength + 1 + word.size() > width)
+    {
+      out += "\n" + std::string(column, ' ');
+      lineLength = column;
+      first = true;
+    }
+    out += (first ? "" : " ") + word;
+    lineLength += (first ? 0 : 1) + word.size();
+    first = false;
+  }
+  return out + "\n";
+}
+
+void PrintHelp(const std::string& options)
+{
+  std::printf(
+    "Usage: %s [options] MESH | SERIES.pvd | FIRST_OF_SERIES --series | FILE FILE ...\n"
+    "       %s [options] --demo metaballs|waves\n"
+    "\n"
+    "Draws a mesh, or a mesh that changes in time, as refractive glass (vtkRefractionPass).\n"
+    "Inputs: %s.\n"
+    "Several files on the command line, a .pvd collection, or a numbered series\n"
+    "(name_0000.vtp, name_0001.vtp, ... with --series) are played as time steps. With\n"
+    "--contour the input's point scalars (or --array) are contoured every time step, so a\n"
+    "series of volumes (.vti, .vtu) becomes a deforming glass surface.\n"
+    "\n"
+    "Without --interactive it renders headless (EGL, no X server needed; an X server's\n"
+    "off-screen window when EGL is missing and DISPLAY is set) and writes what is asked:\n"
+    "--screenshot, --out (a PNG per frame), --contact-sheet, --timing. A progress line is\n"
+    "printed while frames are written. In the window: m cycles the method (DIR, SIR, ISR,\n"
+    "SSP), i / I lower / raise the index of refraction by 0.05, + / - change the search steps,\n"
+    "space starts / stops the animation, n / p step through time; the line at the bottom\n"
+    "shows method, settings and the last frame time.\n"
+    "\n"
+    "Exit codes: 0 done, 1 rendering or writing failed, 2 wrong option or value,\n"
+    "3 no rendering context (no EGL and no display), 4 an input, environment or output\n"
+    "path that cannot be used.\n"
+    "\n"
+    "Options:\n%s\n"
+    "Examples:\n"
+    "  %s bunny.obj --screenshot bunny.png --size 400 --ior 1.33\n"
+    "  %s run.pvd --contour 0.5 --out frames --contact-sheet sheet.png\n"
+    "  %s --demo waves --environment sky.exr --interactive\n",
+    kProgram, kProgram, vtkRefractionSeriesReader::GetKnownExtensions(), options.c_str(),
+    kProgram, kProgram, kProgram);
+}
+
+int ParseOptions(int argc, char* argv[], const std::vector<std::string>& preset, Options& o,
+  Settings& s)
+{
+  std::vector<std::string> words;
+  words.emplace_back(argc > 0 ? argv[0] : kProgram);
+  words.insert(words.end(), preset.begin(), preset.end());
+  for (int i = 1; i < argc; ++i)
+  {
+    words.emplace_back(argv[i]);
+  }
+  std::vector<const char*> pointers;
+  for (const std::string& word : words)
+  {
+    pointers.push_back(word.c_str());
+  }
+
+  // One table gives vtksys the options and --help its text.
+  struct OptionEntry
+  {
+    const char* Name;
+    const char* Value; // the value's placeholder in the help, nullptr for a flag
+    std::string* Text;
+    bool* Flag;
+    const char* Help;
+  };
+  const OptionEntry table[] = {
+    { "--help", nullptr, nullptr, &o.Help,
+      "This text." },
+    { "--demo", "NAME", &o.Demo, nullptr,
+      "Built-in data instead of a file: metaballs (blobs that merge and split) or waves (the wave equation in a box, vtkWaveEquationSource), contoured every time step, beside an opaque cone." },
+    { "--series", nullptr, nullptr, &o.Series,
+      "The input file is one of a numbered series: play every file with the same name and another number." },
+    { "--contour", "V[,V...]", &o.Contour, nullptr,
+      "Contour the input's point scalars at these values (comma-separated, e.g. 0.5 or 0.2,0.8) every time step." },
+    { "--array", "NAME", &o.Array, nullptr,
+      "The point array to contour (default: the active scalars)." },
+    { "--environment", "IMAGE", &o.Environment, nullptr,
+      "A lat-long environment image (EXR, HDR, PNG) the glass refracts, also shown behind the scene. Without it the glass shows the built-in sky and floor and the background is the renderer's." },
+    { "--background", "R,G,B[,R,G,B]", &o.Background, nullptr,
+      "The renderer's background: r,g,b or a gradient r,g,b,r2,g2,b2 (bottom, top), 0..1." },
+    { "--method", "NAME", &o.Method, nullptr,
+      "dir (default: two interfaces, Oliveira and Brauwers), sir (one interface), isr (Wyman's distance estimate), ssp (screen-space perturbation)." },
+    { "--ior", "X", &o.IOR, nullptr,
+      "Index of refraction of the glass, 0.1 to 10 (default 1.5)." },
+    { "--steps", "N", &o.Steps, nullptr,
+      "Search steps of DIR's binary search, 0 to 16 (default 5)." },
+    { "--size", "N|WxH", &o.Size, nullptr,
+      "Window or image size in pixels: N or WxH, 1 to 8192 (default 512)." },
+    { "--frames", "N", &o.Frames, nullptr,
+      "Number of frames to write with --out (default: one per time step, or 1 for a static mesh; more frames than time steps loop the series)." },
+    { "--time", "T", &o.Time, nullptr,
+      "Time to show for --screenshot, --timing and the first interactive frame (default: the first time step)." },
+    { "--out", "FOLDER", &o.OutDir, nullptr,
+      "Folder for the PNG sequence frame_0000.png ... (created if missing)." },
+    { "--screenshot", "FILE.png", &o.Screenshot, nullptr,
+      "Write one PNG of the frame at --time." },
+    { "--contact-sheet", "FILE.png", &o.ContactSheet, nullptr,
+      "Write a PNG of --sheet-frames frames spread evenly over the sequence, side by side." },
+    { "--sheet-columns", "N", &o.SheetColumns, nullptr,
+      "Columns of the contact sheet, 1 to 16 (default 4)." },
+    { "--sheet-frames", "N", &o.SheetFrames, nullptr,
+      "Frames on the contact sheet, 1 to 64 (default 8)." },
+    { "--masks", nullptr, nullptr, &o.Masks,
+      "With --out, also write mask_NNNN.png: the glass's silhouette, white on black (for compositing, and for the tests)." },
+    { "--orbit", "DEG", &o.Orbit, nullptr,
+      "Turn the camera by this many degrees a frame (a turntable for static meshes)." },
+    { "--azimuth", "DEG", &o.Azimuth, nullptr,
+      "Camera azimuth in degrees from the front view (default 0)." },
+    { "--elevation", "DEG", &o.Elevation, nullptr,
+      "Camera elevation in degrees, -89 to 89 (default 20)." },
+    { "--zoom", "X", &o.Zoom, nullptr,
+      "Camera zoom after fitting the scene, 0.1 to 10 (default 1.1)." },
+    { "--timing", "N", &o.Timing, nullptr,
+      "Also time this many frames of DIR, SIR, ISR, SSP and of a plain VTK render of the same mesh, and print the medians (0: no timing)." },
+    { "--no-text", nullptr, nullptr, &o.NoText,
+      "No status line in the images." },
+    { "--interactive", nullptr, nullptr, &o.Interactive,
+      "Open a window (needs a display) instead of writing files." },
+    { "--egl", nullptr, nullptr, &o.EGL,
+      "Accepted for older scripts; no effect." },
+  };
+  using Args = vtksys::CommandLineArguments;
+  Args arguments;
+  arguments.Initialize(static_cast<int>(pointers.size()), pointers.data());
+  arguments.StoreUnusedArguments(true);
+  for (const OptionEntry& entry : table)
+  {
+    if (entry.Flag)
+    {
+      arguments.AddBooleanArgument(entry.Name, entry.Flag, entry.Help);
+    }
+    else
+    {
+      arguments.AddArgument(entry.Name, Args::SPACE_ARGUMENT, entry.Text, entry.Help);
+    }
+  }
+  if (!arguments.Parse())
+  {
+    return Usage("an option is missing its value");
+  }
+  if (o.Help)
+  {
+    std::string help;
+    for (const OptionEntry& entry : table)
+    {
+      help += Wrap(std::string(entry.Name) + (entry.Value ? std::string(" ") + entry.Value : ""),
+        entry.Help);
+    }
+    PrintHelp(help);
+    return -1;
+  }
+  int unusedCount = 0;
+  char** unused = nullptr;
+  arguments.GetUnusedArguments(&unusedCount, &unused);
+  for (int i = 1; i < unusedCount; ++i)
+  {
+    const std::string word = unused[i];
+    if (word.size() > 1 && word[0] == '-')
+    {
+      arguments.DeleteRemainingArguments(unusedCount, &unused);
+      return Usage("unknown option " + Quote(word));
+    }
+    o.Inputs.push_back(word);
+  }
+  arguments.DeleteRemainingArguments(unusedCount, &unused);
+
+  const std::string method = vtksys::SystemTools::LowerCase(o.Method);
+  static const char* const methods[] = { "sir", "dir", "isr", "ssp" };
+  const auto found = std::find(std::begin(methods), std::end(methods), method);
+  if (found == std::end(methods))
+  {
+    return Usage("--method must be dir, sir, isr or ssp, not " + Quote(o.Method));
+  }
+  s.Method = static_cast<int>(found - std::begin(methods));
+  if (!ParseDouble(o.IOR, 0.1, 10.0, s.IOR))
+  {
+    return Usage("--ior needs a number from 0.1 to 10, not " + Quote(o.IOR));
+  }
+  if (!ParseInt(o.Steps, 0, 16, s.Steps))
+  {
+    return Usage("--steps needs a whole number from 0 to 16, not " + Quote(o.Steps));
+  }
+  const size_t x = o.Size.find_first_of("xX");
+  if (!(x == std::string::npos
+          ? ParseInt(o.Size, 1, 8192, s.Width) && ParseInt(o.Size, 1, 8192, s.Height)
+          : ParseInt(o.Size.substr(0, x), 1, 8192, s.Width) &&
+            ParseInt(o.Size.substr(x + 1), 1, 8192, s.Height)))
+  {
+    return Usage("--size needs N or WxH pixels, 1 to 8192, not " + Quote(o.Size));
+  }
+  if (!o.Frames.empty() && !ParseInt(o.Frames, 1, 1000000, s.Frames))
+  {
+    return Usage("--frames needs a whole number from 1, not " + Quote(o.Frames));
+  }
+  if (!o.Time.empty())
+  {
+    s.HaveTime = ParseDouble(o.Time, -1e300, 1e300, s.Time);
+    if (!s.HaveTime)
+    {
+      return Usage("--time needs a number, not " + Quote(o.Time));
+    }
+  }
+  if (!o.Contour.empty() && !ParseList(o.Contour, s.ContourValues))
+  {
+    return Usage("--contour needs numbers separated by commas, not " + Quote(o.Contour));
+  }
+  std::vector<double> background;
+  if (!ParseList(o.Background, background) ||
+    (background.size() != 3 && background.size() != 6) ||
+    std::any_of(background.begin(), background.end(), [](double v) { return v < 0 || v > 1; }))
+  {
+    return Usage("--background needs r,g,b or r,g,b,r2,g2,b2 from 0 to 1, not " +
+      Quote(o.Background));
+  }
+  std::copy(background.begin(), background.end(), s.Background);
+  s.Gradient = background.size() == 6;
+  if (!ParseInt(o.SheetColumns, 1, 16, s.SheetColumns))
+  {
+    return Usage("--sheet-columns needs a whole number from 1 to 16, not " +
+      Quote(o.SheetColumns));
+  }
+  if (!ParseInt(o.SheetFrames, 1, 64, s.SheetFrames))
+  {
+    return Usage("--sheet-frames needs a whole number from 1 to 64, not " + Quote(o.SheetFrames));
+  }
+  if (!ParseDouble(o.Orbit, -360.0, 360.0, s.Orbit))
+  {
+    return Usage("--orbit needs degrees from -360 to 360, not " + Quote(o.Orbit));
+  }
+  if (!ParseDouble(o.Azimuth, -360.0, 360.0, s.Azimuth))
+  {
+    return Usage("--azimuth needs degrees from -360 to 360, not " + Quote(o.Azimuth));
+  }
+  if (!ParseDouble(o.Elevation, -89.0, 89.0, s.Elevation))
+  {
+    return Usage("--elevation needs degrees from -89 to 89, not " + Quote(o.Elevation));
+  }
+  if (!ParseDouble(o.Zoom, 0.1, 10.0, s.Zoom))
+  {
+    return Usage("--zoom needs a number from 0.1 to 10, not " + Quote(o.Zoom));
+  }
+  if (!ParseInt(o.Timing, 0, 100000, s.Timing))
+  {
+    return Usage("--timing needs a whole number of frames from 0, not " + Quote(o.Timing));
+  }
+  if (!o.Demo.empty() && o.Demo != "metaballs" && o.Demo != "waves")
+  {
+    return Usage("--demo must be metaballs or waves, not " + Quote(o.Demo));
+  }
+  if (o.Demo.empty() && o.Inputs.empty())
+  {
+    return Usage("no input: give a mesh file, a .pvd series, or --demo metaballs|waves");
+  }
+  if (!o.Demo.empty() && !o.Inputs.empty())
+  {
+    return Usage("--demo and an input file " + Quote(o.Inputs[0]) + " exclude each other");
+  }
+  if (o.Series && o.Inputs.size() != 1)
+  {
+    return Usage("--series takes one file of the series");
+  }
+  if (!o.Array.empty() && s.ContourValues.empty())
+  {
+    return Usage("--array names the array to contour: give --contour VALUES too");
+  }
+  if (o.Masks && o.OutDir.empty())
+  {
+    return Usage("--masks writes beside the frames: give --out FOLDER too");
+  }
+  if (o.Interactive && !(o.OutDir.empty() && o.Screenshot.empty() && o.ContactSheet.empty() &&
+                          s.Timing == 0))
+  {
+    return Usage("--interactive opens a window; --out, --screenshot, --contact-sheet and "
+                 "--timing are for headless runs");
+  }
+  if (!o.Interactive && o.OutDir.empty() && o.Screenshot.empty() && o.ContactSheet.empty() &&
+    s.Timing == 0)
+  {
+    return Usage("nothing to do: give --interactive, --screenshot FILE, --out FOLDER, "
+                 "--contact-sheet FILE or --timing N");
+  }
+  return RF_VIEWER_OK;
+}
+
+// A progress line for long runs: rewritten in place on a terminal, one line per tenth in a log.
+class ProgressLine
+{
+public:
+  ProgressLine(const char* label, int total)
+    : Label(label)
+    , Total(total)
+    , Terminal(isatty(fileno(stdout)) != 0)
+  {
+  }
+  void Update(int done)
+  {
+    const int percent = this->Total > 0 ? 100 * done / this->Total : 100;
+    if (this->Terminal)
+    {
+      std::printf("\r%s %d/%d (%d%%)", this->Label, done, this->Total, percent);
+      if (done == this->Total)
+      {
+        std::printf("\n");
+      }
+      std::fflush(stdout);
+    }
+    else if (percent / 10 > this->LastTenth || done == this->Total)
+    {
+      this->LastTenth = percent / 10;
+      std::printf("%s %d/%d (%d%%)\n", this->Label, done, this->Total, percent);
+      std::fflush(stdout);
+    }
+  }
+
+private:
+  const char* Label;
+  int Total;
+  bool Terminal;
+  int LastTenth = -1;
+};
+
+// Shows the progress of a pipeline stage that runs long (the wave equation from t = 0, ISR's
+// ray casts on a big mesh): silent under a second, a percentage on a terminal after that,
+// and the time taken at the end.
+struct StageProgress
+{
+  const char* Label;
+  double Start = 0.0;
+  bool Shown = false;
+};
+
+void OnStageProgress(vtkObject*, unsigned long, void* clientData, void* callData)
+{
+  auto* stage = static_cast<StageProgress*>(clientData);
+  const double fraction = *static_cast<double*>(callData);
+  const double now = vtkTimerLog::GetUniversalTime();
+  if (fraction <= 0.0)
+  {
+    stage->Start = now;
+    stage->Shown = false;
+    return;
+  }
+  const double elapsed = now - stage->Start;
+  if (fraction >= 1.0)
+  {
+    if (stage->Shown || elapsed > 1.0)
+    {
+      std::printf("%s%s: %.1f s\n", stage->Shown ? "\r" : "", stage->Label, elapsed);
+      std::fflush(stdout);
+    }
+    return;
+  }
+  if (elapsed > 1.0 && isatty(fileno(stdout)))
+  {
+    std::printf("\r%s %3.0f%%", stage->Label, 100.0 * fraction);
+    std::fflush(stdout);
+    stage->Shown = true;
+  }
+}
+
+struct Scene
+{
+  vtkSmartPointer<vtkAlgorithm> Source;
+  vtkSmartPointer<vtkAlgorithm> Surface; // what the mapper pulls from
+  vtkSmartPointer<vtkISRDistanceFilter> Distances;
+  vtkSmartPointer<vtkActor> Glass;
+  vtkSmartPointer<vtkActor> Cone;
+  vtkSmartPointer<vtkSkybox> Sky;
+  vtkSmartPointer<vtkTextActor> Text;
+  vtkSmartPointer<vtkRenderer> Renderer;
+  vtkSmartPointer<vtkRefractionPass> Pass;
+  std::vector<double> Times;
+  std::string Description;
+  StageProgress SourceProgress{ "computing the data" };
+  StageProgress DistanceProgress{ "ISR distances" };
+};
+
+// The time is requested on the algorithm the mapper pulls from, so that it reaches the
+// source through every filter in between (a request on an upstream filter alone leaves the
+// filters below it holding the old time step).
+void ShowTime(Scene& scene, double time)
+{
+  if (!scene.Times.empty())
+  {
+    scene.Surface->UpdateTimeStep(time);
+  }
+}
+
+int BuildPipeline(const Options& o, const Settings& s, Scene& scene)
+{
+  vtkSmartPointer<vtkAlgorithm> surface;
+  if (!o.Demo.empty())
+  {
+    vtkNew<vtkFlyingEdges3D> contour;
+    contour->ComputeNormalsOn();
+    if (o.Demo == "metaballs")
+    {
+      vtkNew<vtkMetaballsSource> blobs;
+      blobs->SetSampleDimensions(64);
+      contour->SetValue(0, blobs->GetIsoValue());
+      scene.Source = blobs;
+      scene.Description = "metaballs (vtkMetaballsSource), contoured at 1";
+    }
+    else
+    {
+      vtkNew<vtkWaveEquationSource> waves;
+      waves->SetSampleDimensions(64);
+      contour->SetValue(0, waves->GetIsoValue());
+      scene.Source = waves;
+      scene.Description = "the wave equation in a box (vtkWaveEquationSource), contoured at " +
+        std::to_string(waves->GetIsoValue());
+    }
+    for (size_t i = 0; i < s.ContourValues.size(); ++i)
+    {
+      contour->SetValue(static_cast<int>(i), s.ContourValues[i]);
+    }
+    contour->SetInputConnection(scene.Source->GetOutputPort());
+    surface = contour;
+  }
+  else
+  {
+    vtkNew<vtkRefractionSeriesReader> reader;
+    const bool ok = o.Inputs.size() == 1 ? reader->SetFileName(o.Inputs[0], o.Series)
+                                         : reader->SetFileNames(o.Inputs);
+    if (!ok)
+    {
+      return BadInput(reader->GetLastError());
+    }
+    // Read the first file now, so that an unreadable input is reported before any window.
+    reader->UpdateInformation();
+    if (!reader->GetLastError().empty())
+    {
+      return BadInput(reader->GetLastError());
+    }
+    reader->Update();
+    vtkDataSet* first = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+    if (!first)
+    {
+      return BadInput(reader->GetLastError().empty() ? "cannot read " + Quote(o.Inputs[0])
+                                                     : reader->GetLastError());
+    }
+    scene.Source = reader;
+    scene.Description = std::to_string(reader->GetFiles().size()) + " file" +
+      (reader->GetFiles().size() > 1 ? "s" : "") + " from " + reader->GetFiles()[0];
+    if (!s.ContourValues.empty())
+    {
+      vtkDataArray* scalars = o.Array.empty() ? first->GetPointData()->GetScalars()
+                                              : first->GetPointData()->GetArray(o.Array.c_str());
+      if (!scalars)
+      {
+        std::string names;
+        for (int i = 0; i < first->GetPointData()->GetNumberOfArrays(); ++i)
+        {
+          const char* name = first->GetPointData()->GetArrayName(i);
+          names += std::string(names.empty() ? "" : ", ") + (name ? name : "(unnamed)");
+        }
+        return BadInput("--contour: " + Quote(reader->GetFiles()[0]) + " has no point " +
+          (o.Array.empty() ? std::string("scalars") : "array " + Quote(o.Array)) +
+          " (point arrays: " + (names.empty() ? "none" : names) + ")");
+      }
+      vtkNew<vtkContourFilter> contour;
+      contour->SetInputConnection(reader->GetOutputPort());
+      if (!o.Array.empty())
+      {
+        contour->SetInputArrayToProcess(
+          0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, o.Array.c_str());
+      }
+      for (size_t i = 0; i < s.ContourValues.size(); ++i)
+      {
+        contour->SetValue(static_cast<int>(i), s.ContourValues[i]);
+      }
+      contour->ComputeScalarsOff();
+      // Smooth normals across the whole surface: glass with creases where the contour's
+      // triangles meet at an angle would show every facet.
+      vtkNew<vtkPolyDataNormals> normals;
+      normals->SetInputConnection(contour->GetOutputPort());
+      normals->SplittingOff();
+      surface = normals;
+    }
+    else
+    {
+      vtkNew<vtkDataSetSurfaceFilter> outside;
+      outside->SetInputConnection(reader->GetOutputPort());
+      if (first->GetPointData()->GetNormals())
+      {
+        surface = outside;
+      }
+      else
+      {
+        // VTK's default: sharp edges above 30 degrees stay sharp (a cube stays a cube).
+        vtkNew<vtkPolyDataNormals> normals;
+        normals->SetInputConnection(outside->GetOutputPort());
+        surface = normals;
+      }
+    }
+  }
+
+  vtkNew<vtkCallbackCommand> sourceProgress;
+  sourceProgress->SetCallback(OnStageProgress);
+  sourceProgress->SetClientData(&scene.SourceProgress);
+  scene.Source->AddObserver(vtkCommand::ProgressEvent, sourceProgress);
+
+  // ISR's d_N, recomputed whenever the surface changes; DIR needs nothing of the kind.
+  scene.Distances = vtkSmartPointer<vtkISRDistanceFilter>::New();
+  scene.Distances->SetInputConnection(surface->GetOutputPort());
+  vtkNew<vtkCallbackCommand> distanceProgress;
+  distanceProgress->SetCallback(OnStageProgress);
+  distanceProgress->SetClientData(&scene.DistanceProgress);
+  scene.Distances->AddObserver(vtkCommand::ProgressEvent, distanceProgress);
+  scene.Surface = scene.Distances;
+
+  scene.Surface->UpdateInformation();
+  vtkInformation* info = scene.Surface->GetOutputInformation(0);
+  if (info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+  {
+    const double* steps = info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    scene.Times.assign(
+      steps, steps + info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  }
+
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(scene.Surface->GetOutputPort());
+  mapper->ScalarVisibilityOff();
+  scene.Glass = vtkSmartPointer<vtkActor>::New();
+  scene.Glass->SetMapper(mapper);
+  vtkRefractionPass::MakeGlass(scene.Glass, s.IOR);
+  return RF_VIEWER_OK;
+}
+
+int BuildScene(const Options& o, const Settings& s, Scene& scene)
+{
+  const int status = BuildPipeline(o, s, scene);
+  if (status != RF_VIEWER_OK)
+  {
+    return status;
+  }
+  scene.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  scene.Renderer->AddActor(scene.Glass);
+  if (!o.Demo.empty())
+  {
+    vtkNew<vtkConeSource> cone;
+    cone->SetResolution(48);
+    cone->SetCenter(1.9, -0.3, 0.0);
+    cone->SetDirection(0.0, 1.0, 0.0);
+    cone->SetHeight(1.4);
+    cone->SetRadius(0.5);
+    vtkNew<vtkPolyDataMapper> coneMapper;
+    coneMapper->SetInputConnection(cone->GetOutputPort());
+    scene.Cone = vtkSmartPointer<vtkActor>::New();
+    scene.Cone->SetMapper(coneMapper);
+    scene.Cone->GetProperty()->SetColor(0.9, 0.55, 0.1);
+    scene.Renderer->AddActor(scene.Cone);
+  }
+  scene.Renderer->SetBackground(s.Background);
+  if (s.Gradient)
+  {
+    scene.Renderer->SetBackground2(s.Background + 3);
+    scene.Renderer->GradientBackgroundOn();
+  }
+  if (!o.Environment.empty())
+  {
+#ifdef REFRACTION_HAVE_IO
+    std::string error;
+    vtkSmartPointer<vtkTexture> environment =
+      vtkRefractionImageIO::ReadEnvironment(o.Environment, &error);
+    if (!environment)
+    {
+      return BadInput("--environment: " + error);
+    }
+    scene.Renderer->SetEnvironmentTexture(environment);
+    scene.Sky = vtkSmartPointer<vtkSkybox>::New();
+    scene.Sky->SetTexture(environment);
+    scene.Sky->SetProjectionToCube();
+    scene.Renderer->AddActor(scene.Sky);
+#else
+    return BadInput("--environment: built without image I/O (REFRACTION_BUILD_IO=OFF)");
+#endif
+  }
+  scene.Pass = vtkSmartPointer<vtkRefractionPass>::New();
+  scene.Pass->SetMethod(s.Method);
+  scene.Pass->SetSearchSteps(s.Steps);
+  scene.Renderer->SetPass(scene.Pass);
+
+  scene.Text = vtkSmartPointer<vtkTextActor>::New();
+  scene.Text->GetTextProperty()->SetFontSize(std::max(10, std::min(s.Width, s.Height) / 32));
+  scene.Text->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
+  scene.Text->GetTextProperty()->SetBackgroundColor(0.0, 0.0, 0.0);
+  scene.Text->GetTextProperty()->SetBackgroundOpacity(0.5);
+  scene.Text->SetPosition(4, 4);
+  scene.Text->SetVisibility(!o.NoText);
+  scene.Renderer->AddActor2D(scene.Text);
+  return RF_VIEWER_OK;
+}
+
+void SetStatus(Scene& scene, double milliseconds, int timeIndex)
+{
+  std::ostringstream line;
+  line.setf(std::ios::fixed);
+  line.precision(2);
+  line << MethodName(scene.Pass->GetMethod()) << "  IOR "
+       << vtkRefractionPass::GetIndexOfRefraction(scene.Glass);
+  if (scene.Pass->GetMethod() == vtkRefractionPass::DIR)
+  {
+    line << "  " << scene.Pass->GetSearchSteps() << " steps";
+  }
+  line.precision(1);
+  line << "  " << milliseconds << " ms";
+  if (!scene.Times.empty())
+  {
+    line.precision(3);
+    line << "  t " << scene.Times[timeIndex] << " (" << timeIndex + 1 << "/" << scene.Times.size()
+         << ")";
+  }
+  scene.Text->SetInput(line.str().c_str());
+}
+
+vtkSmartPointer<vtkRenderWindow> MakeWindow(const Settings& s, bool interactive, int& status)
+{
+  status = RF_VIEWER_OK;
+  const bool haveDisplay = std::getenv("DISPLAY") && *std::getenv("DISPLAY");
+  if (interactive)
+  {
+    if (!haveDisplay)
+    {
+      status = Usage("--interactive needs a display (DISPLAY is not set)");
+      return nullptr;
+    }
+    auto window = vtkSmartPointer<vtkRenderWindow>::New();
+    window->SetSize(s.Width, s.Height);
+    window->SetMultiSamples(0);
+    window->SetWindowName(kProgram);
+    return window;
+  }
+  std::string error;
+  std::string path;
+  vtkSmartPointer<vtkRenderWindow> window =
+    vtkRefractionCreateEGLWindow(s.Width, s.Height, &error, &path);
+  if (window)
+  {
+    return window;
+  }
+  if (!haveDisplay)
+  {
+    std::fprintf(stderr, "%s: no headless rendering context (EGL: %s) and no display\n",
+      kProgram, error.c_str());
+    status = RF_VIEWER_NO_CONTEXT;
+    return nullptr;
+  }
+  std::fprintf(stderr, "%s: EGL: %s; rendering off screen through the X server\n", kProgram,
+    error.c_str());
+  window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetSize(s.Width, s.Height);
+  window->SetMultiSamples(0);
+  window->SetOffScreenRendering(1);
+  return window;
+}
+
+int TimeIndexOf(const Scene& scene, double time)
+{
+  if (scene.Times.empty())
+  {
+    return 0;
+  }
+  const auto after = std::upper_bound(scene.Times.begin(), scene.Times.end(), time + 1e-12);
+  return after == scene.Times.begin() ? 0 : static_cast<int>(after - scene.Times.begin()) - 1;
+}
+
+// Fitted to the input's bounds rather than the first surface: a contour can grow to fill its
+// volume later on, and the camera should not have to move for it.
+void PlaceCamera(Scene& scene, const Settings& s)
+{
+  vtkRenderer* renderer = scene.Renderer;
+  double bounds[6];
+  vtkBoundingBox box;
+  vtkDataSet* data = vtkDataSet::SafeDownCast(scene.Source->GetOutputDataObject(0));
+  if (data && data->GetNumberOfPoints() > 0)
+  {
+    data->GetBounds(bounds);
+    box.AddBounds(bounds);
+  }
+  for (vtkActor* actor : { scene.Glass.Get(), scene.Cone.Get() })
+  {
+    if (actor && vtkMath::AreBoundsInitialized(actor->GetBounds()))
+    {
+      box.AddBounds(actor->GetBounds());
+    }
+  }
+  if (box.IsValid())
+  {
+    box.GetBounds(bounds);
+    renderer->ResetCamera(bounds);
+  }
+  else
+  {
+    renderer->ResetCamera();
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->Azimuth(s.Azimuth);
+  camera->Elevation(s.Elevation);
+  camera->OrthogonalizeViewUp();
+  camera->Dolly(s.Zoom);
+  renderer->ResetCameraClippingRange();
+}
+
+double RenderMilliseconds(vtkRenderWindow* window)
+{
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  window->Render();
+  glFinish();
+  timer->StopTimer();
+  return timer->GetElapsedTime() * 1e3;
+}
+
+vtkSmartPointer<vtkImageData> Grab(vtkRenderWindow* window)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(grab->GetOutput());
+  return image;
+}
+
+bool WritePNG(vtkImageData* image, const std::string& path)
+{
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  if (writer->GetErrorCode() != 0)
+  {
+    std::fprintf(stderr, "%s: cannot write %s\n", kProgram, path.c_str());
+    return false;
+  }
+  return true;
+}
+
+// The glass's silhouette: the glass actor alone, flat white on black.
+vtkSmartPointer<vtkImageData> GrabMask(Scene& scene, vtkRenderWindow* window)
+{
+  vtkRenderer* renderer = scene.Renderer;
+  const double ior = vtkRefractionPass::GetIndexOfRefraction(scene.Glass);
+  double background[3];
+  renderer->GetBackground(background);
+  const bool gradient = renderer->GetGradientBackground();
+  std::vector<vtkProp*> hidden;
+  for (vtkProp* prop : { static_cast<vtkProp*>(scene.Cone.Get()),
+         static_cast<vtkProp*>(scene.Sky.Get()), static_cast<vtkProp*>(scene.Text.Get()) })
+  {
+    if (prop && prop->GetVisibility())
+    {
+      prop->SetVisibility(false);
+      hidden.push_back(prop);
+    }
+  }
+  vtkRefractionPass::ClearGlass(scene.Glass);
+  vtkProperty* property = scene.Glass->GetProperty();
+  property->LightingOff();
+  property->SetColor(1.0, 1.0, 1.0);
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  renderer->GradientBackgroundOff();
+  window->Render();
+  vtkSmartPointer<vtkImageData> mask = Grab(window);
+  property->LightingOn();
+  renderer->SetBackground(background);
+  renderer->SetGradientBackground(gradient);
+  vtkRefractionPass::MakeGlass(scene.Glass, ior);
+  for (vtkProp* prop : hidden)
+  {
+    prop->SetVisibility(true);
+  }
+  return mask;
+}
+
+vtkSmartPointer<vtkImageData> ContactSheet(
+  const std::vector<vtkSmartPointer<vtkImageData>>& tiles, int columns)
+{
+  const int rows = static_cast<int>((tiles.size() + columns - 1) / columns);
+  vtkNew<vtkImageAppend> sheet;
+  sheet->SetAppendAxis(1);
+  // VTK's rows go up: append the last row of tiles first so that the first frame is top left.
+  for (int row = rows - 1; row >= 0; --row)
+  {
+    vtkNew<vtkImageAppend> line;
+    line->SetAppendAxis(0);
+    for (int column = 0; column < columns; ++column)
+    {
+      const size_t index = static_cast<size_t>(row) * columns + column;
+      if (index < tiles.size())
+      {
+        line->AddInputData(tiles[index]);
+      }
+      else
+      {
+        vtkNew<vtkImageData> blank;
+        blank->CopyStructure(tiles[0]);
+        blank->AllocateScalars(tiles[0]->GetScalarType(), tiles[0]->GetNumberOfScalarComponents());
+        std::memset(blank->GetScalarPointer(), 0,
+          static_cast<size_t>(blank->GetNumberOfPoints()) *
+            blank->GetNumberOfScalarComponents() * blank->GetScalarSize());
+        line->AddInputData(blank);
+      }
+    }
+    line->Update();
+    auto copy = vtkSmartPointer<vtkImageData>::New();
+    copy->DeepCopy(line->GetOutput());
+    sheet->AddInputData(copy);
+  }
+  sheet->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(sheet->GetOutput());
+  return image;
+}
+
+struct InteractiveState
+{
+  Scene* TheScene;
+  bool Animate = true;
+  int TimeIndex = 0;
+};
+
+void OnRenderEnd(vtkObject*, unsigned long, void* clientData, void*)
+{
+  auto* state = static_cast<InteractiveState*>(clientData);
+  SetStatus(*state->TheScene, state->TheScene->Renderer->GetLastRenderTimeInSeconds() * 1e3,
+    state->TimeIndex);
+}
+
+void OnKey(vtkObject* caller, unsigned long, void* clientData, void*)
+{
+  auto* state = static_cast<InteractiveState*>(clientData);
+  Scene& scene = *state->TheScene;
+  auto* interactor = static_cast<vtkRenderWindowInteractor*>(caller);
+  const std::string key = interactor->GetKeySym() ? interactor->GetKeySym() : "";
+  const int steps = static_cast<int>(scene.Times.size());
+  if (key == "m")
+  {
+    // DIR -> SIR -> ISR -> SSP -> DIR
+    static const int next[] = { vtkRefractionPass::ISR, vtkRefractionPass::SIR,
+      vtkRefractionPass::SSP, vtkRefractionPass::DIR };
+    scene.Pass->SetMethod(next[scene.Pass->GetMethod()]);
+  }
+  else if (key == "i" || key == "I")
+  {
+    const double ior = vtkRefractionPass::GetIndexOfRefraction(scene.Glass);
+    const double changed = std::min(10.0, std::max(0.1, ior + (key == "I" ? 0.05 : -0.05)));
+    vtkRefractionPass::MakeGlass(scene.Glass, changed);
+  }
+  else if (key == "plus" || key == "equal" || key == "KP_Add")
+  {
+    scene.Pass->SetSearchSteps(std::min(scene.Pass->GetSearchSteps() + 1, 16));
+  }
+  else if (key == "minus" || key == "KP_Subtract")
+  {
+    scene.Pass->SetSearchSteps(std::max(scene.Pass->GetSearchSteps() - 1, 0));
+  }
+  else if (key == "space")
+  {
+    state->Animate = !state->Animate;
+  }
+  else if ((key == "n" || key == "p") && steps > 0)
+  {
+    state->Animate = false;
+    state->TimeIndex = (state->TimeIndex + (key == "n" ? 1 : steps - 1)) % steps;
+    ShowTime(scene, scene.Times[state->TimeIndex]);
+  }
+  else
+  {
+    return;
+  }
+  interactor->GetRenderWindow()->Render();
+}
+
+void OnTimer(vtkObject* caller, unsigned long, void* clientData, void*)
+{
+  auto* state = static_cast<InteractiveState*>(clientData);
+  Scene& scene = *state->TheScene;
+  if (!state->Animate || scene.Times.size() < 2)
+  {
+    return;
+  }
+  state->TimeIndex = (state->TimeIndex + 1) % static_cast<int>(scene.Times.size());
+  ShowTime(scene, scene.Times[state->TimeIndex]);
+  static_cast<vtkRenderWindowInteractor*>(caller)->GetRenderWindow()->Render();
+}
+
+int RunInteractive(Scene& scene, vtkRenderWindow* window, int timeIndex)
+{
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  vtkNew<vtkInteractorStyleTrackballCamera> style;
+  interactor->SetInteractorStyle(style);
+  interactor->SetRenderWindow(window);
+  InteractiveState state{ &scene, true, timeIndex };
+  vtkNew<vtkCallbackCommand> keys;
+  keys->SetCallback(OnKey);
+  keys->SetClientData(&state);
+  // Before the style's own handlers: 'i' would otherwise be taken by nothing, but '+'/'-'
+  // and others are harmless; keep ours first anyway.
+  interactor->AddObserver(vtkCommand::KeyPressEvent, keys, 1.0);
+  vtkNew<vtkCallbackCommand> timer;
+  timer->SetCallback(OnTimer);
+  timer->SetClientData(&state);
+  interactor->AddObserver(vtkCommand::TimerEvent, timer);
+  vtkNew<vtkCallbackCommand> status;
+  status->SetCallback(OnRenderEnd);
+  status->SetClientData(&state);
+  scene.Renderer->AddObserver(vtkCommand::EndEvent, status);
+  interactor->Initialize();
+  interactor->CreateRepeatingTimer(40);
+  SetStatus(scene, 0.0, timeIndex);
+  window->Render();
+  std::printf("keys: m method, i/I index of refraction, +/- search steps, space animation, "
+              "n/p time step\n");
+  interactor->Start();
+  return RF_VIEWER_OK;
+}
+
+double MedianFrameMilliseconds(Scene& scene, vtkRenderWindow* window, int frames)
+{
+  std::vector<double> times;
+  for (int i = 0; i < 5 + frames; ++i)
+  {
+    scene.Renderer->GetActiveCamera()->Azimuth(1.0);
+    const double ms = RenderMilliseconds(window);
+    if (i >= 5)
+    {
+      times.push_back(ms);
+    }
+  }
+  std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
+  return times[times.size() / 2];
+}
+
+void ReportTiming(Scene& scene, vtkRenderWindow* window, const Settings& s)
+{
+  const bool text = scene.Text->GetVisibility() != 0;
+  scene.Text->SetVisibility(false);
+  const vtkIdType triangles =
+    vtkPolyData::SafeDownCast(scene.Surface->GetOutputDataObject(0))->GetNumberOfPolys();
+  double ms[4];
+  for (int method : { vtkRefractionPass::DIR, vtkRefractionPass::SIR, vtkRefractionPass::ISR,
+         vtkRefractionPass::SSP })
+  {
+    scene.Pass->SetMethod(method);
+    ms[method] = MedianFrameMilliseconds(scene, window, s.Timing);
+  }
+  scene.Pass->SetMethod(s.Method);
+  const double ior = vtkRefractionPass::GetIndexOfRefraction(scene.Glass);
+  vtkRefractionPass::ClearGlass(scene.Glass);
+  const double plain = MedianFrameMilliseconds(scene, window, s.Timing);
+  vtkRefractionPass::MakeGlass(scene.Glass, ior);
+  scene.Text->SetVisibility(text);
+  std::printf("median frame time over %d frames at %dx%d, %lld triangles, renderer: %s\n",
+    s.Timing, s.Width, s.Height, static_cast<long long>(triangles),
+    reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+  std::printf("  DIR (%d steps)  %8.2f ms  (%.2fx plain)\n", s.Steps, ms[vtkRefractionPass::DIR],
+    ms[vtkRefractionPass::DIR] / plain);
+  std::printf("  SIR             %8.2f ms  (%.2fx plain)\n", ms[vtkRefractionPass::SIR],
+    ms[vtkRefractionPass::SIR] / plain);
+  std::printf("  ISR             %8.2f ms  (%.2fx plain), plus %.2f ms of d_N ray casting each "
+              "time the surface changes\n",
+    ms[vtkRefractionPass::ISR], ms[vtkRefractionPass::ISR] / plain,
+    scene.Distances->GetLastComputeSeconds() * 1e3);
+  std::printf("  SSP             %8.2f ms  (%.2fx plain)\n", ms[vtkRefractionPass::SSP],
+    ms[vtkRefractionPass::SSP] / plain);
+  std::printf("  plain VTK       %8.2f ms\n", plain);
+}
+
+int RunHeadless(const Options& o, const Settings& s, Scene& scene, vtkRenderWindow* window,
+  int firstIndex)
+{
+  if (!o.Screenshot.empty())
+  {
+    const double ms = RenderMilliseconds(window);
+    SetStatus(scene, ms, firstIndex);
+    window->Render();
+    if (!WritePNG(Grab(window), o.Screenshot))
+    {
+      return RF_VIEWER_FAILED;
+    }
+    std::printf("wrote %s (%dx%d)\n", o.Screenshot.c_str(), s.Width, s.Height);
+  }
+
+  const bool sequence = !o.OutDir.empty() || !o.ContactSheet.empty();
+  if (sequence)
+  {
+    const int steps = static_cast<int>(scene.Times.size());
+    const int frames = s.Frames > 0 ? s.Frames : std::max(steps, 1);
+    // The frames that go on the contact sheet, spread evenly from the first to the last.
+    std::vector<int> sheetFrames;
+    const int tiles = std::min(frames, s.SheetFrames);
+    for (int k = 0; k < tiles; ++k)
+    {
+      sheetFrames.push_back(tiles > 1 ? static_cast<int>(std::lround(
+                                          static_cast<double>(k) * (frames - 1) / (tiles - 1)))
+                                      : 0);
+    }
+    std::vector<vtkSmartPointer<vtkImageData>> sheet;
+    ProgressLine progress("frames", frames);
+    double lastMs = 0.0;
+    for (int frame = 0; frame < frames; ++frame)
+    {
+      const int index = steps > 0 ? frame % steps : 0;
+      if (steps > 0)
+      {
+        ShowTime(scene, scene.Times[index]);
+      }
+      if (frame > 0 && s.Orbit != 0.0)
+      {
+        scene.Renderer->GetActiveCamera()->Azimuth(s.Orbit);
+      }
+      scene.Renderer->ResetCameraClippingRange();
+      // The status line shows the time of the frame before (it is drawn within the frame).
+      SetStatus(scene, lastMs, index);
+      lastMs = RenderMilliseconds(window);
+      vtkSmartPointer<vtkImageData> image = Grab(window);
+      if (!o.OutDir.empty())
+      {
+        char name[32];
+        std::snprintf(name, sizeof(name), "frame_%04d.png", frame);
+        if (!WritePNG(image, o.OutDir + "/" + name))
+        {
+          return RF_VIEWER_FAILED;
+        }
+        if (o.Masks)
+        {
+          std::snprintf(name, sizeof(name), "mask_%04d.png", frame);
+          if (!WritePNG(GrabMask(scene, window), o.OutDir + "/" + name))
+          {
+            return RF_VIEWER_FAILED;
+          }
+        }
+      }
+      if (std::find(sheetFrames.begin(), sheetFrames.end(), frame) != sheetFrames.end())
+      {
+        sheet.push_back(image);
+      }
+      progress.Update(frame + 1);
+    }
+    if (!o.OutDir.empty())
+    {
+      std::printf("wrote %d frames to %s/frame_NNNN.png (%dx%d)%s\n", frames, o.OutDir.c_str(),
+        s.Width, s.Height, o.Masks ? " and mask_NNNN.png" : "");
+    }
+    if (!o.ContactSheet.empty())
+    {
+      const int columns = std::min(s.SheetColumns, static_cast<int>(sheet.size()));
+      if (!WritePNG(ContactSheet(sheet, columns), o.ContactSheet))
+      {
+        return RF_VIEWER_FAILED;
+      }
+      std::printf("wrote %s (%zu frames, %d columns)\n", o.ContactSheet.c_str(), sheet.size(),
+        columns);
+    }
+  }
+
+  if (s.Timing > 0)
+  {
+    ShowTime(scene, scene.Times.empty() ? 0.0 : scene.Times[firstIndex]);
+    ReportTiming(scene, window, s);
+  }
+  return RF_VIEWER_OK;
+}
+
+// Output paths are checked before anything is rendered, so that a typo costs no time.
+int CheckOutputs(const Options& o)
+{
+  if (!o.OutDir.empty())
+  {
+    if (vtksys::SystemTools::FileExists(o.OutDir, true))
+    {
+      return BadInput("--out: " + Quote(o.OutDir) + " is a file, not a folder");
+    }
+    if (!vtksys::SystemTools::MakeDirectory(o.OutDir))
+    {
+      return BadInput("--out: cannot create the folder " + Quote(o.OutDir));
+    }
+  }
+  for (const std::string* file : { &o.Screenshot, &o.ContactSheet })
+  {
+    if (file->empty())
+    {
+      continue;
+    }
+    const std::string folder = vtksys::SystemTools::GetFilenamePath(*file);
+    if (!folder.empty() && !vtksys::SystemTools::FileIsDirectory(folder))
+    {
+      return BadInput("cannot write " + Quote(*file) + ": no folder " + Quote(folder));
+    }
+    if (vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(*file)) !=
+      ".png")
+    {
+      return BadInput("cannot write " + Quote(*file) + ": images are written as .png");
+    }
+  }
+  return RF_VIEWER_OK;
+}
+}
+
+int rfViewerMain(int argc, char* argv[], const std::vector<std::string>& preset)
+{
+  Options options;
+  Settings settings;
+  const int parsed = ParseOptions(argc, argv, preset, options, settings);
+  if (parsed != RF_VIEWER_OK)
+  {
+    return parsed < 0 ? RF_VIEWER_OK : parsed;
+  }
+  int status = CheckOutputs(options);
+  if (status != RF_VIEWER_OK)
+  {
+    return status;
+  }
+  Scene scene;
+  status = BuildScene(options, settings, scene);
+  if (status != RF_VIEWER_OK)
+  {
+    return status;
+  }
+  vtkSmartPointer<vtkRenderWindow> window = MakeWindow(settings, options.Interactive, status);
+  if (!window)
+  {
+    return status;
+  }
+  window->AddRenderer(scene.Renderer);
+
+  const int firstIndex = settings.HaveTime ? TimeIndexOf(scene, settings.Time) : 0;
+  if (settings.HaveTime && scene.Times.empty())
+  {
+    std::fprintf(stderr, "%s: the input has no time steps; --time ignored\n", kProgram);
+  }
+  if (!scene.Times.empty())
+  {
+    ShowTime(scene, scene.Times[firstIndex]);
+  }
+  else
+  {
+    scene.Surface->Update();
+  }
+  vtkPolyData* first = vtkPolyData::SafeDownCast(scene.Surface->GetOutputDataObject(0));
+  if (!first || first->GetNumberOfPolys() + first->GetNumberOfStrips() == 0)
+  {
+    std::fprintf(stderr, "%s: note: the first frame has no surface%s\n", kProgram,
+      settings.ContourValues.empty() ? "" : " (no point reaches the contour values)");
+  }
+  std::printf("%s: %s, %zu time step%s, %lld triangles in the first frame\n", kProgram,
+    scene.Description.c_str(), std::max<size_t>(scene.Times.size(), 1),
+    scene.Times.size() > 1 ? "s" : "",
+    static_cast<long long>(first ? first->GetNumberOfPolys() : 0));
+  PlaceCamera(scene, settings);
+
+  if (options.Interactive)
+  {
+    return RunInteractive(scene, window, firstIndex);
+  }
+  return RunHeadless(options, settings, scene, window, firstIndex);
+}

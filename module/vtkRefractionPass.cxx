@@ -1373,7 +1373,11 @@ bool vtkRefractionPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstra
   }
   if (program->IsUniformUsed("rfSceneColor") && this->SceneColorTexture)
   {
-    program->SetUniformi("rfSceneColor", this->SceneColorTexture->GetTextureUnit());
+    // SSP's mask stage draws before the scene colour is bound: unit -1 is GL_INVALID_VALUE.
+    if (this->SceneColorTexture->GetTextureUnit() >= 0)
+    {
+      program->SetUniformi("rfSceneColor", this->SceneColorTexture->GetTextureUnit());
+    }
     program->SetUniformf("rfSSPStrength", static_cast<float>(this->SSPStrength));
     program->SetUniformf("rfSSPFresnelBias", static_cast<float>(this->SSPFresnelBias));
     program->SetUniformf("rfSSPFresnelPower", static_cast<float>(this->SSPFresnelPower));

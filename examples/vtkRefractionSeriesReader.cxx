@@ -6,14 +6,17 @@
 #include <vtkDataObject.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetReader.h>
+#include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkObjectFactory.h>
 #include <vtkPLYReader.h>
+#include <vtkRectilinearGrid.h>
 #include <vtkSTLReader.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtkStructuredGrid.h>
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
 #include <vtkXMLImageDataReader.h>
@@ -318,6 +321,28 @@ int vtkRefractionSeriesReader::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  // Structured data: filters downstream (the contour of a volume) ask for an extent, and
+  // without the whole extent they would ask for none. The first file's extent stands for
+  // the series.
+  int extent[6] = { 0, -1, 0, -1, 0, -1 };
+  if (auto* image = vtkImageData::SafeDownCast(this->Loaded))
+  {
+    image->GetExtent(extent);
+    outInfo->Set(vtkDataObject::SPACING(), image->GetSpacing(), 3);
+    outInfo->Set(vtkDataObject::ORIGIN(), image->GetOrigin(), 3);
+  }
+  else if (auto* rectilinear = vtkRectilinearGrid::SafeDownCast(this->Loaded))
+  {
+    rectilinear->GetExtent(extent);
+  }
+  else if (auto* structured = vtkStructuredGrid::SafeDownCast(this->Loaded))
+  {
+    structured->GetExtent(extent);
+  }
+  if (extent[1] >= extent[0])
+  {
+    outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  }
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
   if (this->Times.size() > 1)

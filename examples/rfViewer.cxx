@@ -821,7 +821,7 @@ void SetStatus(Scene& scene, double milliseconds, int timeIndex)
   if (!scene.Times.empty())
   {
     line.precision(3);
-    line << "  t " << scene.Times[timeIndex] << " (" << timeIndex + 1 << "/" << scene.Times.size()
+    line << "  time " << scene.Times[timeIndex] << " (" << timeIndex + 1 << "/" << scene.Times.size()
          << ")";
   }
   scene.Text->SetInput(line.str().c_str());
@@ -1184,6 +1184,9 @@ void ReportTiming(Scene& scene, vtkRenderWindow* window, const Settings& s)
 int RunHeadless(const Options& o, const Settings& s, Scene& scene, vtkRenderWindow* window,
   int firstIndex)
 {
+  // The first frame compiles shaders and converts the environment: not a frame time to show.
+  scene.Text->SetInput("");
+  window->Render();
   if (!o.Screenshot.empty())
   {
     const double ms = RenderMilliseconds(window);
@@ -1212,7 +1215,7 @@ int RunHeadless(const Options& o, const Settings& s, Scene& scene, vtkRenderWind
     }
     std::vector<vtkSmartPointer<vtkImageData>> sheet;
     ProgressLine progress("frames", frames);
-    double lastMs = 0.0;
+    double lastMs = RenderMilliseconds(window);
     for (int frame = 0; frame < frames; ++frame)
     {
       const int index = steps > 0 ? frame % steps : 0;

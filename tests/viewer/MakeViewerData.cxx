@@ -1,5 +1,7 @@
 // Writes the files the viewer tests read, into the folder given:
 //   sphere.vtp                 a sphere (normals, no point scalars)
+//   cone.stl, cone.ply,        a cone as STL, PLY, legacy VTK and an unstructured grid
+//   cone.vtk, cone.vtu
 //   torus.obj                  a torus, Wavefront OBJ
 //   blobs.pvd, blobs_00k.vti   4 time steps of the metaball field (volumes, contoured by the
 //                              viewer), referenced by a ParaView collection
@@ -9,7 +11,14 @@
 #include "vtkMetaballsSource.h"
 #include "vtkWaveEquationSource.h"
 
+#include <vtkAppendFilter.h>
+#include <vtkConeSource.h>
 #include <vtkFlyingEdges3D.h>
+#include <vtkPLYWriter.h>
+#include <vtkPolyDataWriter.h>
+#include <vtkSTLWriter.h>
+#include <vtkTriangleFilter.h>
+#include <vtkXMLUnstructuredGridWriter.h>
 #include <vtkNew.h>
 #include <vtkOBJWriter.h>
 #include <vtkParametricFunctionSource.h>
@@ -50,6 +59,33 @@ int main(int argc, char* argv[])
   polyWriter->SetInputConnection(sphere->GetOutputPort());
   polyWriter->SetFileName((folder + "/sphere.vtp").c_str());
   if (!polyWriter->Write())
+  {
+    return EXIT_FAILURE;
+  }
+
+  // A closed cone: the other mesh formats.
+  vtkNew<vtkConeSource> cone;
+  cone->SetResolution(40);
+  cone->SetHeight(1.6);
+  cone->SetRadius(0.7);
+  cone->CappingOn();
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(cone->GetOutputPort());
+  vtkNew<vtkSTLWriter> stlWriter;
+  stlWriter->SetInputConnection(triangles->GetOutputPort());
+  stlWriter->SetFileName((folder + "/cone.stl").c_str());
+  vtkNew<vtkPLYWriter> plyWriter;
+  plyWriter->SetInputConnection(triangles->GetOutputPort());
+  plyWriter->SetFileName((folder + "/cone.ply").c_str());
+  vtkNew<vtkPolyDataWriter> legacyWriter;
+  legacyWriter->SetInputConnection(triangles->GetOutputPort());
+  legacyWriter->SetFileName((folder + "/cone.vtk").c_str());
+  vtkNew<vtkAppendFilter> unstructured;
+  unstructured->SetInputConnection(triangles->GetOutputPort());
+  vtkNew<vtkXMLUnstructuredGridWriter> gridWriter;
+  gridWriter->SetInputConnection(unstructured->GetOutputPort());
+  gridWriter->SetFileName((folder + "/cone.vtu").c_str());
+  if (!stlWriter->Write() || !plyWriter->Write() || !legacyWriter->Write() || !gridWriter->Write())
   {
     return EXIT_FAILURE;
   }

@@ -235,8 +235,9 @@ void PrintHelp(const std::string& options)
     "--screenshot, --out (a PNG per frame), --contact-sheet, --timing. A progress line is\n"
     "printed while frames are written. In the window: m cycles the method (DIR, SIR, ISR,\n"
     "SSP), i / I lower / raise the index of refraction by 0.05, + / - change the search steps,\n"
-    "space starts / stops the animation, n / p step through time; the line at the bottom\n"
-    "shows method, settings and the last frame time.\n"
+    "space starts / stops the animation, the arrows Right / Left step through time; the line\n"
+    "at the bottom"
+    " shows method, settings, the last frame time and the time step.\n"
     "\n"
     "Exit codes: 0 done, 1 rendering or writing failed, 2 wrong option or value,\n"
     "3 no rendering context (no EGL and no display), 4 an input, environment or output\n"
@@ -1073,10 +1074,11 @@ void OnKey(vtkObject* caller, unsigned long, void* clientData, void*)
   {
     state->Animate = !state->Animate;
   }
-  else if ((key == "n" || key == "p") && steps > 0)
+  else if ((key == "Right" || key == "Left") && steps > 0)
   {
+    // Arrows rather than letters: the interactor style takes 'p' (pick) and others.
     state->Animate = false;
-    state->TimeIndex = (state->TimeIndex + (key == "n" ? 1 : steps - 1)) % steps;
+    state->TimeIndex = (state->TimeIndex + (key == "Right" ? 1 : steps - 1)) % steps;
     ShowTime(scene, scene.Times[state->TimeIndex]);
   }
   else
@@ -1084,6 +1086,9 @@ void OnKey(vtkObject* caller, unsigned long, void* clientData, void*)
     return;
   }
   interactor->GetRenderWindow()->Render();
+  // The same line in the terminal, for a record of what was looked at.
+  std::printf("%s\n", scene.Text->GetInput());
+  std::fflush(stdout);
 }
 
 void OnTimer(vtkObject* caller, unsigned long, void* clientData, void*)
@@ -1125,7 +1130,8 @@ int RunInteractive(Scene& scene, vtkRenderWindow* window, int timeIndex)
   SetStatus(scene, 0.0, timeIndex);
   window->Render();
   std::printf("keys: m method, i/I index of refraction, +/- search steps, space animation, "
-              "n/p time step\n");
+              "Right/Left time step\n");
+  std::fflush(stdout);
   interactor->Start();
   return RF_VIEWER_OK;
 }

@@ -60,7 +60,17 @@
 
 namespace
 {
-const char* const kProgram = "RefractionViewer";
+// The name messages and --help use: RefractionViewer, or RefractionDemo for the preset.
+std::string& ProgramName()
+{
+  static std::string name = "RefractionViewer";
+  return name;
+}
+
+const char* kProgram()
+{
+  return ProgramName().c_str();
+}
 
 struct Options
 {
@@ -119,13 +129,13 @@ struct Settings
 
 int Usage(const std::string& message)
 {
-  std::fprintf(stderr, "%s: %s (see %s --help)\n", kProgram, message.c_str(), kProgram);
+  std::fprintf(stderr, "%s: %s (see %s --help)\n", kProgram(), message.c_str(), kProgram());
   return RF_VIEWER_USAGE;
 }
 
 int BadInput(const std::string& message)
 {
-  std::fprintf(stderr, "%s: %s\n", kProgram, message.c_str());
+  std::fprintf(stderr, "%s: %s\n", kProgram(), message.c_str());
   return RF_VIEWER_BAD_INPUT;
 }
 
@@ -245,18 +255,21 @@ void PrintHelp(const std::string& options)
     "\n"
     "Options:\n%s\n"
     "Examples:\n"
-    "  %s bunny.obj --screenshot bunny.png --size 400 --ior 1.33\n"
-    "  %s run.pvd --contour 0.5 --out frames --contact-sheet sheet.png\n"
-    "  %s --demo waves --environment sky.exr --interactive\n",
-    kProgram, kProgram, vtkRefractionSeriesReader::GetKnownExtensions(), options.c_str(),
-    kProgram, kProgram, kProgram);
+    "  RefractionViewer bunny.obj --screenshot bunny.png --size 400 --ior 1.33\n"
+    "  RefractionViewer run.pvd --contour 0.5 --out frames --contact-sheet sheet.png\n"
+    "  RefractionViewer --demo waves --environment sky.exr --interactive\n",
+    kProgram(), kProgram(), vtkRefractionSeriesReader::GetKnownExtensions(), options.c_str());
 }
 
 int ParseOptions(int argc, char* argv[], const std::vector<std::string>& preset, Options& o,
   Settings& s)
 {
   std::vector<std::string> words;
-  words.emplace_back(argc > 0 ? argv[0] : kProgram);
+  words.emplace_back(argc > 0 ? argv[0] : kProgram());
+  if (argc > 0)
+  {
+    ProgramName() = vtksys::SystemTools::GetFilenameName(argv[0]);
+  }
   words.insert(words.end(), preset.begin(), preset.end());
   for (int i = 1; i < argc; ++i)
   {
@@ -361,6 +374,16 @@ int ParseOptions(int argc, char* argv[], const std::vector<std::string>& preset,
         entry.Help);
     }
     PrintHelp(help);
+    if (!preset.empty())
+    {
+      std::string words;
+      for (const std::string& word : preset)
+      {
+        words += " " + word;
+      }
+      std::printf("\n%s is %s with the preset options%s, which any option given overrides.\n",
+        kProgram(), "RefractionViewer", words.c_str());
+    }
     return -1;
   }
   int unusedCount = 0;
@@ -842,7 +865,7 @@ vtkSmartPointer<vtkRenderWindow> MakeWindow(const Settings& s, bool interactive,
     auto window = vtkSmartPointer<vtkRenderWindow>::New();
     window->SetSize(s.Width, s.Height);
     window->SetMultiSamples(0);
-    window->SetWindowName(kProgram);
+    window->SetWindowName(kProgram());
     return window;
   }
   std::string error;
@@ -856,11 +879,11 @@ vtkSmartPointer<vtkRenderWindow> MakeWindow(const Settings& s, bool interactive,
   if (!haveDisplay)
   {
     std::fprintf(stderr, "%s: no headless rendering context (EGL: %s) and no display\n",
-      kProgram, error.c_str());
+      kProgram(), error.c_str());
     status = RF_VIEWER_NO_CONTEXT;
     return nullptr;
   }
-  std::fprintf(stderr, "%s: EGL: %s; rendering off screen through the X server\n", kProgram,
+  std::fprintf(stderr, "%s: EGL: %s; rendering off screen through the X server\n", kProgram(),
     error.c_str());
   window = vtkSmartPointer<vtkRenderWindow>::New();
   window->SetSize(s.Width, s.Height);
@@ -945,7 +968,7 @@ bool WritePNG(vtkImageData* image, const std::string& path)
   writer->Write();
   if (writer->GetErrorCode() != 0)
   {
-    std::fprintf(stderr, "%s: cannot write %s\n", kProgram, path.c_str());
+    std::fprintf(stderr, "%s: cannot write %s\n", kProgram(), path.c_str());
     return false;
   }
   return true;
@@ -1351,7 +1374,7 @@ int rfViewerMain(int argc, char* argv[], const std::vector<std::string>& preset)
   const int firstIndex = settings.HaveTime ? TimeIndexOf(scene, settings.Time) : 0;
   if (settings.HaveTime && scene.Times.empty())
   {
-    std::fprintf(stderr, "%s: the input has no time steps; --time ignored\n", kProgram);
+    std::fprintf(stderr, "%s: the input has no time steps; --time ignored\n", kProgram());
   }
   if (!scene.Times.empty())
   {
@@ -1364,10 +1387,10 @@ int rfViewerMain(int argc, char* argv[], const std::vector<std::string>& preset)
   vtkPolyData* first = vtkPolyData::SafeDownCast(scene.Surface->GetOutputDataObject(0));
   if (!first || first->GetNumberOfPolys() + first->GetNumberOfStrips() == 0)
   {
-    std::fprintf(stderr, "%s: note: the first frame has no surface%s\n", kProgram,
+    std::fprintf(stderr, "%s: note: the first frame has no surface%s\n", kProgram(),
       settings.ContourValues.empty() ? "" : " (no point reaches the contour values)");
   }
-  std::printf("%s: %s, %zu time step%s, %lld triangles in the first frame\n", kProgram,
+  std::printf("%s: %s, %zu time step%s, %lld triangles in the first frame\n", kProgram(),
     scene.Description.c_str(), std::max<size_t>(scene.Times.size(), 1),
     scene.Times.size() > 1 ? "s" : "",
     static_cast<long long>(first ? first->GetNumberOfPolys() : 0));

@@ -2,6 +2,7 @@
 // as refractive glass; interactive in a window, or headless (EGL, no X server) writing a
 // screenshot, a numbered PNG sequence, a contact sheet and frame times. `--help` says it all.
 #include "rfViewer.h"
+#include "rfViewerOptions.h"
 
 #include "vtkISRDistanceFilter.h"
 #include "vtkMetaballsSource.h"
@@ -46,11 +47,9 @@
 #include <vtkTimerLog.h>
 #include <vtkWindowToImageFilter.h>
 #include <vtk_glew.h>
-#include <vtksys/CommandLineArguments.hxx>
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -60,463 +59,10 @@
 
 namespace
 {
-// The name messages and --help use: RefractionViewer, or RefractionDemo for the preset.
-std::string& ProgramName()
-{
-  static std::string name = "RefractionViewer";
-  return name;
-}
-
-const char* kProgram()
-{
-  return ProgramName().c_str();
-}
-
-struct Options
-{
-  std::vector<std::string> Inputs;
-  bool Series = false;
-  std::string Demo;
-  std::string Contour;
-  std::string Array;
-  std::string Environment;
-  std::string Background = "0.12,0.12,0.14,0.35,0.45,0.6";
-  std::string Method = "dir";
-  std::string IOR = "1.5";
-  std::string Steps = "5";
-  std::string Size = "512";
-  std::string Frames;
-  std::string Time;
-  std::string OutDir;
-  std::string Screenshot;
-  std::string ContactSheet;
-  std::string SheetColumns = "4";
-  std::string SheetFrames = "8";
-  std::string Orbit = "0";
-  std::string Azimuth = "0";
-  std::string Elevation = "20";
-  std::string Zoom = "1.1";
-  std::string Timing = "0";
-  bool Interactive = false;
-  bool NoText = false;
-  bool Masks = false;
-  bool Help = false;
-  bool EGL = false; // accepted for older scripts: headless rendering always tries EGL first
-};
-
-// The checked values.
-struct Settings
-{
-  int Method = vtkRefractionPass::DIR;
-  double IOR = 1.5;
-  int Steps = 5;
-  int Width = 512;
-  int Height = 512;
-  int Frames = -1; // -1: every time step (or one frame of a static mesh)
-  bool HaveTime = false;
-  double Time = 0.0;
-  std::vector<double> ContourValues;
-  double Background[6] = { 0, 0, 0, 0, 0, 0 };
-  bool Gradient = false;
-  int SheetColumns = 4;
-  int SheetFrames = 8;
-  double Orbit = 0.0;
-  double Azimuth = 0.0;
-  double Elevation = 20.0;
-  double Zoom = 1.1;
-  int Timing = 0;
-};
-
-int Usage(const std::string& message)
-{
-  std::fprintf(stderr, "%s: %s (see %s --help)\n", kProgram(), message.c_str(), kProgram());
-  return RF_VIEWER_USAGE;
-}
-
-int BadInput(const std::string& message)
-{
-  std::fprintf(stderr, "%s: %s\n", kProgram(), message.c_str());
-  return RF_VIEWER_BAD_INPUT;
-}
-
-bool ParseDouble(const std::string& text, double low, double high, double& value)
-{
-  if (text.empty())
-  {
-    return false;
-  }
-  char* end = nullptr;
-  errno = 0;
-  const double parsed = std::strtod(text.c_str(), &end);
-  if (errno != 0 || *end != '\0' || !std::isfinite(parsed) || parsed < low || parsed > high)
-  {
-    return false;
-  }
-  value = parsed;
-  return true;
-}
-
-bool ParseInt(const std::string& text, int low, int high, int& value)
-{
-  if (text.empty())
-  {
-    return false;
-  }
-  char* end = nullptr;
-  errno = 0;
-  const long parsed = std::strtol(text.c_str(), &end, 10);
-  if (errno != 0 || *end != '\0' || parsed < low || parsed > high)
-  {
-    return false;
-  }
-  value = static_cast<int>(parsed);
-  return true;
-}
-
-bool ParseList(const std::string& text, std::vector<double>& values)
-{
-  values.clear();
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ','))
-  {
-    double value = 0.0;
-    if (!ParseDouble(item, -1e300, 1e300, value))
-    {
-      return false;
-    }
-    values.push_back(value);
-  }
-  return !values.empty();
-}
-
-std::string Quote(const std::string& text)
-{
-  return "'" + text + "'";
-}
-
 const char* MethodName(int method)
 {
   static const char* const names[] = { "SIR", "DIR", "ISR", "SSP" };
   return names[method];
-}
-
-// "  --name VALUE         help text wrapped at 92 columns"
-std::string Wrap(const std::string& name, const std::string& help)
-{
-  const size_t column = 26;
-  const size_t width = 92;
-  std::string out = "  " + name;
-  out += out.size() + 1 < column ? std::string(column - out.size(), ' ') : "\n" + std::string(column, ' ');
-  size_t lineLength = column;
-  std::stringstream words(help);
-  std::string word;
-  bool first = true;
-  while (words >> word)
-  {
-    if (!first && lineLength + 1 + word.size() > width)
-    {
-      out += "\n" + std::string(column, ' ');
-      lineLength = column;
-      first = true;
-    }
-    out += (first ? "" : " ") + word;
-    lineLength += (first ? 0 : 1) + word.size();
-    first = false;
-  }
-  return out + "\n";
-}
-
-void PrintHelp(const std::string& options)
-{
-  std::printf(
-    "Usage: %s [options] MESH | SERIES.pvd | FIRST_OF_SERIES --series | FILE FILE ...\n"
-    "       %s [options] --demo metaballs|waves\n"
-    "\n"
-    "Draws a mesh, or a mesh that changes in time, as refractive glass (vtkRefractionPass).\n"
-    "Inputs: %s.\n"
-    "Several files on the command line, a .pvd collection, or a numbered series\n"
-    "(name_0000.vtp, name_0001.vtp, ... with --series) are played as time steps. With\n"
-    "--contour the input's point scalars (or --array) are contoured every time step, so a\n"
-    "series of volumes (.vti, .vtu) becomes a deforming glass surface.\n"
-    "\n"
-    "Without --interactive it renders headless (EGL, no X server needed; an X server's\n"
-    "off-screen window when EGL is missing and DISPLAY is set) and writes what is asked:\n"
-    "--screenshot, --out (a PNG per frame), --contact-sheet, --timing. A progress line is\n"
-    "printed while frames are written. In the window: m cycles the method (DIR, SIR, ISR,\n"
-    "SSP), i / I lower / raise the index of refraction by 0.05, + / - change the search steps,\n"
-    "space starts / stops the animation, the arrows Right / Left step through time; the line\n"
-    "at the bottom"
-    " shows method, settings, the last frame time and the time step.\n"
-    "\n"
-    "Exit codes: 0 done, 1 rendering or writing failed, 2 wrong option or value,\n"
-    "3 no rendering context (no EGL and no display), 4 an input, environment or output\n"
-    "path that cannot be used.\n"
-    "\n"
-    "Options:\n%s\n"
-    "Examples:\n"
-    "  RefractionViewer bunny.obj --screenshot bunny.png --size 400 --ior 1.33\n"
-    "  RefractionViewer run.pvd --contour 0.5 --out frames --contact-sheet sheet.png\n"
-    "  RefractionViewer --demo waves --environment sky.exr --interactive\n",
-    kProgram(), kProgram(), vtkRefractionSeriesReader::GetKnownExtensions(), options.c_str());
-}
-
-int ParseOptions(int argc, char* argv[], const std::vector<std::string>& preset, Options& o,
-  Settings& s)
-{
-  std::vector<std::string> words;
-  words.emplace_back(argc > 0 ? argv[0] : kProgram());
-  if (argc > 0)
-  {
-    ProgramName() = vtksys::SystemTools::GetFilenameName(argv[0]);
-  }
-  words.insert(words.end(), preset.begin(), preset.end());
-  for (int i = 1; i < argc; ++i)
-  {
-    words.emplace_back(argv[i]);
-  }
-  std::vector<const char*> pointers;
-  for (const std::string& word : words)
-  {
-    pointers.push_back(word.c_str());
-  }
-
-  // One table gives vtksys the options and --help its text.
-  struct OptionEntry
-  {
-    const char* Name;
-    const char* Value; // the value's placeholder in the help, nullptr for a flag
-    std::string* Text;
-    bool* Flag;
-    const char* Help;
-  };
-  const OptionEntry table[] = {
-    { "--help", nullptr, nullptr, &o.Help,
-      "This text." },
-    { "--demo", "NAME", &o.Demo, nullptr,
-      "Built-in data instead of a file: metaballs (blobs that merge and split) or waves (the wave equation in a box, vtkWaveEquationSource), contoured every time step, beside an opaque cone." },
-    { "--series", nullptr, nullptr, &o.Series,
-      "The input file is one of a numbered series: play every file with the same name and another number." },
-    { "--contour", "V[,V...]", &o.Contour, nullptr,
-      "Contour the input's point scalars at these values (comma-separated, e.g. 0.5 or 0.2,0.8) every time step." },
-    { "--array", "NAME", &o.Array, nullptr,
-      "The point array to contour (default: the active scalars)." },
-    { "--environment", "IMAGE", &o.Environment, nullptr,
-      "A lat-long environment image (EXR, HDR, PNG) the glass refracts, also shown behind the scene. Without it the glass shows the built-in sky and floor and the background is the renderer's." },
-    { "--background", "R,G,B[,R,G,B]", &o.Background, nullptr,
-      "The renderer's background: r,g,b or a gradient r,g,b,r2,g2,b2 (bottom, top), 0..1." },
-    { "--method", "NAME", &o.Method, nullptr,
-      "dir (default: two interfaces, Oliveira and Brauwers), sir (one interface), isr (Wyman's distance estimate), ssp (screen-space perturbation)." },
-    { "--ior", "X", &o.IOR, nullptr,
-      "Index of refraction of the glass, 0.1 to 10 (default 1.5)." },
-    { "--steps", "N", &o.Steps, nullptr,
-      "Search steps of DIR's binary search, 0 to 16 (default 5)." },
-    { "--size", "N|WxH", &o.Size, nullptr,
-      "Window or image size in pixels: N or WxH, 1 to 8192 (default 512)." },
-    { "--frames", "N", &o.Frames, nullptr,
-      "Number of frames to write with --out (default: one per time step, or 1 for a static mesh; more frames than time steps loop the series)." },
-    { "--time", "T", &o.Time, nullptr,
-      "Time to show for --screenshot, --timing and the first interactive frame (default: the first time step)." },
-    { "--out", "FOLDER", &o.OutDir, nullptr,
-      "Folder for the PNG sequence frame_0000.png ... (created if missing)." },
-    { "--screenshot", "FILE.png", &o.Screenshot, nullptr,
-      "Write one PNG of the frame at --time." },
-    { "--contact-sheet", "FILE.png", &o.ContactSheet, nullptr,
-      "Write a PNG of --sheet-frames frames spread evenly over the sequence, side by side." },
-    { "--sheet-columns", "N", &o.SheetColumns, nullptr,
-      "Columns of the contact sheet, 1 to 16 (default 4)." },
-    { "--sheet-frames", "N", &o.SheetFrames, nullptr,
-      "Frames on the contact sheet, 1 to 64 (default 8)." },
-    { "--masks", nullptr, nullptr, &o.Masks,
-      "With --out, also write mask_NNNN.png: the glass's silhouette, white on black (for compositing, and for the tests)." },
-    { "--orbit", "DEG", &o.Orbit, nullptr,
-      "Turn the camera by this many degrees a frame (a turntable for static meshes)." },
-    { "--azimuth", "DEG", &o.Azimuth, nullptr,
-      "Camera azimuth in degrees from the front view (default 0)." },
-    { "--elevation", "DEG", &o.Elevation, nullptr,
-      "Camera elevation in degrees, -89 to 89 (default 20)." },
-    { "--zoom", "X", &o.Zoom, nullptr,
-      "Camera zoom after fitting the scene, 0.1 to 10 (default 1.1)." },
-    { "--timing", "N", &o.Timing, nullptr,
-      "Also time this many frames of DIR, SIR, ISR, SSP and of a plain VTK render of the same mesh, and print the medians (0: no timing)." },
-    { "--no-text", nullptr, nullptr, &o.NoText,
-      "No status line in the images." },
-    { "--interactive", nullptr, nullptr, &o.Interactive,
-      "Open a window (needs a display) instead of writing files." },
-    { "--egl", nullptr, nullptr, &o.EGL,
-      "Accepted for older scripts; no effect." },
-  };
-  using Args = vtksys::CommandLineArguments;
-  Args arguments;
-  arguments.Initialize(static_cast<int>(pointers.size()), pointers.data());
-  arguments.StoreUnusedArguments(true);
-  for (const OptionEntry& entry : table)
-  {
-    if (entry.Flag)
-    {
-      arguments.AddBooleanArgument(entry.Name, entry.Flag, entry.Help);
-    }
-    else
-    {
-      arguments.AddArgument(entry.Name, Args::SPACE_ARGUMENT, entry.Text, entry.Help);
-    }
-  }
-  if (!arguments.Parse())
-  {
-    return Usage("an option is missing its value");
-  }
-  if (o.Help)
-  {
-    std::string help;
-    for (const OptionEntry& entry : table)
-    {
-      help += Wrap(std::string(entry.Name) + (entry.Value ? std::string(" ") + entry.Value : ""),
-        entry.Help);
-    }
-    PrintHelp(help);
-    if (!preset.empty())
-    {
-      std::string words;
-      for (const std::string& word : preset)
-      {
-        words += " " + word;
-      }
-      std::printf("\n%s is %s with the preset options%s, which any option given overrides.\n",
-        kProgram(), "RefractionViewer", words.c_str());
-    }
-    return -1;
-  }
-  int unusedCount = 0;
-  char** unused = nullptr;
-  arguments.GetUnusedArguments(&unusedCount, &unused);
-  for (int i = 1; i < unusedCount; ++i)
-  {
-    const std::string word = unused[i];
-    if (word.size() > 1 && word[0] == '-')
-    {
-      arguments.DeleteRemainingArguments(unusedCount, &unused);
-      return Usage("unknown option " + Quote(word));
-    }
-    o.Inputs.push_back(word);
-  }
-  arguments.DeleteRemainingArguments(unusedCount, &unused);
-
-  const std::string method = vtksys::SystemTools::LowerCase(o.Method);
-  static const char* const methods[] = { "sir", "dir", "isr", "ssp" };
-  const auto found = std::find(std::begin(methods), std::end(methods), method);
-  if (found == std::end(methods))
-  {
-    return Usage("--method must be dir, sir, isr or ssp, not " + Quote(o.Method));
-  }
-  s.Method = static_cast<int>(found - std::begin(methods));
-  if (!ParseDouble(o.IOR, 0.1, 10.0, s.IOR))
-  {
-    return Usage("--ior needs a number from 0.1 to 10, not " + Quote(o.IOR));
-  }
-  if (!ParseInt(o.Steps, 0, 16, s.Steps))
-  {
-    return Usage("--steps needs a whole number from 0 to 16, not " + Quote(o.Steps));
-  }
-  const size_t x = o.Size.find_first_of("xX");
-  if (!(x == std::string::npos
-          ? ParseInt(o.Size, 1, 8192, s.Width) && ParseInt(o.Size, 1, 8192, s.Height)
-          : ParseInt(o.Size.substr(0, x), 1, 8192, s.Width) &&
-            ParseInt(o.Size.substr(x + 1), 1, 8192, s.Height)))
-  {
-    return Usage("--size needs N or WxH pixels, 1 to 8192, not " + Quote(o.Size));
-  }
-  if (!o.Frames.empty() && !ParseInt(o.Frames, 1, 1000000, s.Frames))
-  {
-    return Usage("--frames needs a whole number from 1, not " + Quote(o.Frames));
-  }
-  if (!o.Time.empty())
-  {
-    s.HaveTime = ParseDouble(o.Time, -1e300, 1e300, s.Time);
-    if (!s.HaveTime)
-    {
-      return Usage("--time needs a number, not " + Quote(o.Time));
-    }
-  }
-  if (!o.Contour.empty() && !ParseList(o.Contour, s.ContourValues))
-  {
-    return Usage("--contour needs numbers separated by commas, not " + Quote(o.Contour));
-  }
-  std::vector<double> background;
-  if (!ParseList(o.Background, background) ||
-    (background.size() != 3 && background.size() != 6) ||
-    std::any_of(background.begin(), background.end(), [](double v) { return v < 0 || v > 1; }))
-  {
-    return Usage("--background needs r,g,b or r,g,b,r2,g2,b2 from 0 to 1, not " +
-      Quote(o.Background));
-  }
-  std::copy(background.begin(), background.end(), s.Background);
-  s.Gradient = background.size() == 6;
-  if (!ParseInt(o.SheetColumns, 1, 16, s.SheetColumns))
-  {
-    return Usage("--sheet-columns needs a whole number from 1 to 16, not " +
-      Quote(o.SheetColumns));
-  }
-  if (!ParseInt(o.SheetFrames, 1, 64, s.SheetFrames))
-  {
-    return Usage("--sheet-frames needs a whole number from 1 to 64, not " + Quote(o.SheetFrames));
-  }
-  if (!ParseDouble(o.Orbit, -360.0, 360.0, s.Orbit))
-  {
-    return Usage("--orbit needs degrees from -360 to 360, not " + Quote(o.Orbit));
-  }
-  if (!ParseDouble(o.Azimuth, -360.0, 360.0, s.Azimuth))
-  {
-    return Usage("--azimuth needs degrees from -360 to 360, not " + Quote(o.Azimuth));
-  }
-  if (!ParseDouble(o.Elevation, -89.0, 89.0, s.Elevation))
-  {
-    return Usage("--elevation needs degrees from -89 to 89, not " + Quote(o.Elevation));
-  }
-  if (!ParseDouble(o.Zoom, 0.1, 10.0, s.Zoom))
-  {
-    return Usage("--zoom needs a number from 0.1 to 10, not " + Quote(o.Zoom));
-  }
-  if (!ParseInt(o.Timing, 0, 100000, s.Timing))
-  {
-    return Usage("--timing needs a whole number of frames from 0, not " + Quote(o.Timing));
-  }
-  if (!o.Demo.empty() && o.Demo != "metaballs" && o.Demo != "waves")
-  {
-    return Usage("--demo must be metaballs or waves, not " + Quote(o.Demo));
-  }
-  if (o.Demo.empty() && o.Inputs.empty())
-  {
-    return Usage("no input: give a mesh file, a .pvd series, or --demo metaballs|waves");
-  }
-  if (!o.Demo.empty() && !o.Inputs.empty())
-  {
-    return Usage("--demo and an input file " + Quote(o.Inputs[0]) + " exclude each other");
-  }
-  if (o.Series && o.Inputs.size() != 1)
-  {
-    return Usage("--series takes one file of the series");
-  }
-  if (!o.Array.empty() && s.ContourValues.empty())
-  {
-    return Usage("--array names the array to contour: give --contour VALUES too");
-  }
-  if (o.Masks && o.OutDir.empty())
-  {
-    return Usage("--masks writes beside the frames: give --out FOLDER too");
-  }
-  if (o.Interactive && !(o.OutDir.empty() && o.Screenshot.empty() && o.ContactSheet.empty() &&
-                          s.Timing == 0))
-  {
-    return Usage("--interactive opens a window; --out, --screenshot, --contact-sheet and "
-                 "--timing are for headless runs");
-  }
-  if (!o.Interactive && o.OutDir.empty() && o.Screenshot.empty() && o.ContactSheet.empty() &&
-    s.Timing == 0)
-  {
-    return Usage("nothing to do: give --interactive, --screenshot FILE, --out FOLDER, "
-                 "--contact-sheet FILE or --timing N");
-  }
-  return RF_VIEWER_OK;
 }
 
 // A progress line for long runs: rewritten in place on a terminal, one line per tenth in a log.
@@ -623,7 +169,7 @@ void ShowTime(Scene& scene, double time)
   }
 }
 
-int BuildPipeline(const Options& o, const Settings& s, Scene& scene)
+int BuildPipeline(const rfViewerOptions& o, const rfViewerSettings& s, Scene& scene)
 {
   vtkSmartPointer<vtkAlgorithm> surface;
   if (!o.Demo.empty())
@@ -661,19 +207,19 @@ int BuildPipeline(const Options& o, const Settings& s, Scene& scene)
                                          : reader->SetFileNames(o.Inputs);
     if (!ok)
     {
-      return BadInput(reader->GetLastError());
+      return rfViewerBadInput(reader->GetLastError());
     }
     // Read the first file now, so that an unreadable input is reported before any window.
     reader->UpdateInformation();
     if (!reader->GetLastError().empty())
     {
-      return BadInput(reader->GetLastError());
+      return rfViewerBadInput(reader->GetLastError());
     }
     reader->Update();
     vtkDataSet* first = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
     if (!first)
     {
-      return BadInput(reader->GetLastError().empty() ? "cannot read " + Quote(o.Inputs[0])
+      return rfViewerBadInput(reader->GetLastError().empty() ? "cannot read " + rfViewerQuote(o.Inputs[0])
                                                      : reader->GetLastError());
     }
     scene.Source = reader;
@@ -691,8 +237,8 @@ int BuildPipeline(const Options& o, const Settings& s, Scene& scene)
           const char* name = first->GetPointData()->GetArrayName(i);
           names += std::string(names.empty() ? "" : ", ") + (name ? name : "(unnamed)");
         }
-        return BadInput("--contour: " + Quote(reader->GetFiles()[0]) + " has no point " +
-          (o.Array.empty() ? std::string("scalars") : "array " + Quote(o.Array)) +
+        return rfViewerBadInput("--contour: " + rfViewerQuote(reader->GetFiles()[0]) + " has no point " +
+          (o.Array.empty() ? std::string("scalars") : "array " + rfViewerQuote(o.Array)) +
           " (point arrays: " + (names.empty() ? "none" : names) + ")");
       }
       vtkNew<vtkContourFilter> contour;
@@ -764,7 +310,7 @@ int BuildPipeline(const Options& o, const Settings& s, Scene& scene)
   return RF_VIEWER_OK;
 }
 
-int BuildScene(const Options& o, const Settings& s, Scene& scene)
+int BuildScene(const rfViewerOptions& o, const rfViewerSettings& s, Scene& scene)
 {
   const int status = BuildPipeline(o, s, scene);
   if (status != RF_VIEWER_OK)
@@ -802,7 +348,7 @@ int BuildScene(const Options& o, const Settings& s, Scene& scene)
       vtkRefractionImageIO::ReadEnvironment(o.Environment, &error);
     if (!environment)
     {
-      return BadInput("--environment: " + error);
+      return rfViewerBadInput("--environment: " + error);
     }
     scene.Renderer->SetEnvironmentTexture(environment);
     scene.Sky = vtkSmartPointer<vtkSkybox>::New();
@@ -810,7 +356,7 @@ int BuildScene(const Options& o, const Settings& s, Scene& scene)
     scene.Sky->SetProjectionToCube();
     scene.Renderer->AddActor(scene.Sky);
 #else
-    return BadInput("--environment: built without image I/O (REFRACTION_BUILD_IO=OFF)");
+    return rfViewerBadInput("--environment: built without image I/O (REFRACTION_BUILD_IO=OFF)");
 #endif
   }
   scene.Pass = vtkSmartPointer<vtkRefractionPass>::New();
@@ -851,7 +397,7 @@ void SetStatus(Scene& scene, double milliseconds, int timeIndex)
   scene.Text->SetInput(line.str().c_str());
 }
 
-vtkSmartPointer<vtkRenderWindow> MakeWindow(const Settings& s, bool interactive, int& status)
+vtkSmartPointer<vtkRenderWindow> MakeWindow(const rfViewerSettings& s, bool interactive, int& status)
 {
   status = RF_VIEWER_OK;
   const bool haveDisplay = std::getenv("DISPLAY") && *std::getenv("DISPLAY");
@@ -859,13 +405,13 @@ vtkSmartPointer<vtkRenderWindow> MakeWindow(const Settings& s, bool interactive,
   {
     if (!haveDisplay)
     {
-      status = Usage("--interactive needs a display (DISPLAY is not set)");
+      status = rfViewerUsage("--interactive needs a display (DISPLAY is not set)");
       return nullptr;
     }
     auto window = vtkSmartPointer<vtkRenderWindow>::New();
     window->SetSize(s.Width, s.Height);
     window->SetMultiSamples(0);
-    window->SetWindowName(kProgram());
+    window->SetWindowName(rfViewerProgram());
     return window;
   }
   std::string error;
@@ -879,11 +425,11 @@ vtkSmartPointer<vtkRenderWindow> MakeWindow(const Settings& s, bool interactive,
   if (!haveDisplay)
   {
     std::fprintf(stderr, "%s: no headless rendering context (EGL: %s) and no display\n",
-      kProgram(), error.c_str());
+      rfViewerProgram(), error.c_str());
     status = RF_VIEWER_NO_CONTEXT;
     return nullptr;
   }
-  std::fprintf(stderr, "%s: EGL: %s; rendering off screen through the X server\n", kProgram(),
+  std::fprintf(stderr, "%s: EGL: %s; rendering off screen through the X server\n", rfViewerProgram(),
     error.c_str());
   window = vtkSmartPointer<vtkRenderWindow>::New();
   window->SetSize(s.Width, s.Height);
@@ -904,7 +450,7 @@ int TimeIndexOf(const Scene& scene, double time)
 
 // Fitted to the input's bounds rather than the first surface: a contour can grow to fill its
 // volume later on, and the camera should not have to move for it.
-void PlaceCamera(Scene& scene, const Settings& s)
+void PlaceCamera(Scene& scene, const rfViewerSettings& s)
 {
   vtkRenderer* renderer = scene.Renderer;
   double bounds[6];
@@ -968,7 +514,7 @@ bool WritePNG(vtkImageData* image, const std::string& path)
   writer->Write();
   if (writer->GetErrorCode() != 0)
   {
-    std::fprintf(stderr, "%s: cannot write %s\n", kProgram(), path.c_str());
+    std::fprintf(stderr, "%s: cannot write %s\n", rfViewerProgram(), path.c_str());
     return false;
   }
   return true;
@@ -1175,7 +721,7 @@ double MedianFrameMilliseconds(Scene& scene, vtkRenderWindow* window, int frames
   return times[times.size() / 2];
 }
 
-void ReportTiming(Scene& scene, vtkRenderWindow* window, const Settings& s)
+void ReportTiming(Scene& scene, vtkRenderWindow* window, const rfViewerSettings& s)
 {
   const bool text = scene.Text->GetVisibility() != 0;
   scene.Text->SetVisibility(false);
@@ -1210,7 +756,7 @@ void ReportTiming(Scene& scene, vtkRenderWindow* window, const Settings& s)
   std::printf("  plain VTK       %8.2f ms\n", plain);
 }
 
-int RunHeadless(const Options& o, const Settings& s, Scene& scene, vtkRenderWindow* window,
+int RunHeadless(const rfViewerOptions& o, const rfViewerSettings& s, Scene& scene, vtkRenderWindow* window,
   int firstIndex)
 {
   // The first frame compiles shaders and converts the environment: not a frame time to show.
@@ -1310,17 +856,17 @@ int RunHeadless(const Options& o, const Settings& s, Scene& scene, vtkRenderWind
 }
 
 // Output paths are checked before anything is rendered, so that a typo costs no time.
-int CheckOutputs(const Options& o)
+int CheckOutputs(const rfViewerOptions& o)
 {
   if (!o.OutDir.empty())
   {
     if (vtksys::SystemTools::FileExists(o.OutDir, true))
     {
-      return BadInput("--out: " + Quote(o.OutDir) + " is a file, not a folder");
+      return rfViewerBadInput("--out: " + rfViewerQuote(o.OutDir) + " is a file, not a folder");
     }
     if (!vtksys::SystemTools::MakeDirectory(o.OutDir))
     {
-      return BadInput("--out: cannot create the folder " + Quote(o.OutDir));
+      return rfViewerBadInput("--out: cannot create the folder " + rfViewerQuote(o.OutDir));
     }
   }
   for (const std::string* file : { &o.Screenshot, &o.ContactSheet })
@@ -1332,12 +878,12 @@ int CheckOutputs(const Options& o)
     const std::string folder = vtksys::SystemTools::GetFilenamePath(*file);
     if (!folder.empty() && !vtksys::SystemTools::FileIsDirectory(folder))
     {
-      return BadInput("cannot write " + Quote(*file) + ": no folder " + Quote(folder));
+      return rfViewerBadInput("cannot write " + rfViewerQuote(*file) + ": no folder " + rfViewerQuote(folder));
     }
     if (vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(*file)) !=
       ".png")
     {
-      return BadInput("cannot write " + Quote(*file) + ": images are written as .png");
+      return rfViewerBadInput("cannot write " + rfViewerQuote(*file) + ": images are written as .png");
     }
   }
   return RF_VIEWER_OK;
@@ -1346,9 +892,9 @@ int CheckOutputs(const Options& o)
 
 int rfViewerMain(int argc, char* argv[], const std::vector<std::string>& preset)
 {
-  Options options;
-  Settings settings;
-  const int parsed = ParseOptions(argc, argv, preset, options, settings);
+  rfViewerOptions options;
+  rfViewerSettings settings;
+  const int parsed = rfViewerParseOptions(argc, argv, preset, options, settings);
   if (parsed != RF_VIEWER_OK)
   {
     return parsed < 0 ? RF_VIEWER_OK : parsed;
@@ -1374,7 +920,7 @@ int rfViewerMain(int argc, char* argv[], const std::vector<std::string>& preset)
   const int firstIndex = settings.HaveTime ? TimeIndexOf(scene, settings.Time) : 0;
   if (settings.HaveTime && scene.Times.empty())
   {
-    std::fprintf(stderr, "%s: the input has no time steps; --time ignored\n", kProgram());
+    std::fprintf(stderr, "%s: the input has no time steps; --time ignored\n", rfViewerProgram());
   }
   if (!scene.Times.empty())
   {
@@ -1387,10 +933,10 @@ int rfViewerMain(int argc, char* argv[], const std::vector<std::string>& preset)
   vtkPolyData* first = vtkPolyData::SafeDownCast(scene.Surface->GetOutputDataObject(0));
   if (!first || first->GetNumberOfPolys() + first->GetNumberOfStrips() == 0)
   {
-    std::fprintf(stderr, "%s: note: the first frame has no surface%s\n", kProgram(),
+    std::fprintf(stderr, "%s: note: the first frame has no surface%s\n", rfViewerProgram(),
       settings.ContourValues.empty() ? "" : " (no point reaches the contour values)");
   }
-  std::printf("%s: %s, %zu time step%s, %lld triangles in the first frame\n", kProgram(),
+  std::printf("%s: %s, %zu time step%s, %lld triangles in the first frame\n", rfViewerProgram(),
     scene.Description.c_str(), std::max<size_t>(scene.Times.size(), 1),
     scene.Times.size() > 1 ? "s" : "",
     static_cast<long long>(first ? first->GetNumberOfPolys() : 0));

@@ -262,6 +262,16 @@ int BuildPipeline(const rfViewerOptions& o, const rfViewerSettings& s, Scene& sc
     }
     else
     {
+      if (first->GetNumberOfCells() > 0 && first->GetMaxCellSize() > 4 &&
+        first->GetPointData()->GetScalars())
+      {
+        // Hexahedra, voxels, tetrahedra...: a volume with scalars, and glass of its outer box
+        // is rarely what was meant.
+        std::fprintf(stderr,
+          "%s: note: %s is a volume; drawing its outer surface (--contour VALUES draws an "
+          "isosurface of its point scalars)\n",
+          rfViewerProgram(), rfViewerQuote(reader->GetFiles()[0]).c_str());
+      }
       vtkNew<vtkDataSetSurfaceFilter> outside;
       outside->SetInputConnection(reader->GetOutputPort());
       if (first->GetPointData()->GetNormals())

@@ -1,8 +1,10 @@
 #include "vtkRefractionImageIO.h"
 
 #include "vtkDataArray.h"
+#include "vtkEquirectangularToCubeMapTexture.h"
 #include "vtkFloatArray.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLTexture.h"
 #include "vtkPointData.h"
 
 #include <OpenImageIO/imageio.h>
@@ -273,4 +275,39 @@ bool vtkRefractionImageIO::WriteImage(
     return false;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkTexture> vtkRefractionImageIO::ReadEnvironment(
+  const std::string& path, std::string* error, int cubeMapSize)
+{
+  if (cubeMapSize < 16 || cubeMapSize > 8192)
+  {
+    ReportError(error,
+      "vtkRefractionImageIO: cube map size " + std::to_string(cubeMapSize) +
+        " is out of range (16 to 8192)");
+    return nullptr;
+  }
+  vtkSmartPointer<vtkImageData> image = ReadImage(path, error);
+  if (!image)
+  {
+    return nullptr;
+  }
+  vtkNew<vtkOpenGLTexture> latLong;
+  latLong->SetInputData(image);
+  latLong->SetColorModeToDirectScalars();
+  latLong->UseSRGBColorSpaceOff();
+  latLong->InterpolateOn();
+  // No mipmaps on the lat-long image: the conversion's longitude jumps from 1 to 0 at the
+  // seam, and the derivative there would pick the coarsest level, a grey line in the sky.
+  latLong->MipmapOff();
+  // Repeat would blend the north pole's row with the south pole's.
+  latLong->SetWrap(vtkTexture::ClampToEdge);
+  auto cubeMap = vtkSmartPointer<vtkEquirectangularToCubeMapTexture>::New();
+  cubeMap->SetInputTexture(latLong);
+  cubeMap->SetCubeMapSize(static_cast<unsigned int>(cubeMapSize));
+  // VTK's image-based lighting prefilters the environment and asks for both.
+  cubeMap->InterpolateOn();
+  cubeMap->MipmapOn();
+  return cubeMap;
 }

@@ -26,6 +26,7 @@
 #include "vtkImageData.h" // For vtkSmartPointer<vtkImageData> return values
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For return values
+#include "vtkTexture.h"      // For vtkSmartPointer<vtkTexture> return values
 
 #include <string> // For paths and error messages
 
@@ -59,6 +60,22 @@ public:
    */
   static bool WriteImage(
     vtkImageData* image, const char* arrayName, const std::string& path, std::string* error);
+
+  /**
+   * Read a lat-long (equirectangular) environment image, EXR, HDR or PNG, and return the
+   * cube map to give vtkRenderer::SetEnvironmentTexture (the refraction pass, VTK's
+   * image-based lighting and vtkSkybox all take it). The image becomes a linear float
+   * texture whose values reach the shaders unchanged (direct scalars: without that, VTK
+   * maps float scalars through a lookup table and the world turns red), interpolated and
+   * clamped at the edges, converted by a vtkEquirectangularToCubeMapTexture of
+   * @a cubeMapSize pixels a face (16 to 8192) with interpolation and mipmaps on, as VTK's
+   * image-based lighting expects. The top row of the file is the sky (+y, the renderer's
+   * EnvironmentUp by default). PNG and other 8-bit files are taken as linear too (no sRGB
+   * decoding), so that a colour written to the file is the colour the glass shows. Returns nullptr and a message on
+   * failure (a missing or unreadable file, a size out of range).
+   */
+  static vtkSmartPointer<vtkTexture> ReadEnvironment(
+    const std::string& path, std::string* error, int cubeMapSize = 512);
 
 protected:
   vtkRefractionImageIO() = default;

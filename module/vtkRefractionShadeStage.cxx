@@ -151,6 +151,14 @@ void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* 
     return;
   }
   vtkShaderProgram* shader = program->Quad->Program;
+  // The cube map first: a vtkEquirectangularToCubeMapTexture renders its faces with a program
+  // of its own the first time, which must not be bound when our uniforms are set.
+  vtkOpenGLTexture* cube = vtkOpenGLTexture::SafeDownCast(frame.EnvironmentCube);
+  const bool useCube = cube && shader->IsUniformUsed("rfEnvironmentCube");
+  if (useCube)
+  {
+    cube->Render(ren);
+  }
   static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())
     ->GetShaderCache()
     ->ReadyShaderProgram(shader);
@@ -173,10 +181,8 @@ void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* 
     shader->SetUniformi("rfDepthRangeTex", levels.back()->GetTextureUnit());
     bound.push_back(levels.back());
   }
-  vtkOpenGLTexture* cube = vtkOpenGLTexture::SafeDownCast(frame.EnvironmentCube);
-  if (cube && shader->IsUniformUsed("rfEnvironmentCube"))
+  if (useCube)
   {
-    cube->Render(ren);
     shader->SetUniformi("rfEnvironmentCube", cube->GetTextureUnit());
     shader->SetUniformMatrix3x3("rfEnvMatrix", const_cast<float*>(frame.EnvironmentMatrix));
   }
@@ -203,7 +209,7 @@ void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* 
 
   program->Quad->Render();
 
-  if (cube && shader->IsUniformUsed("rfEnvironmentCube"))
+  if (useCube)
   {
     cube->PostRender(ren);
   }

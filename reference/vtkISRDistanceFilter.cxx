@@ -34,6 +34,7 @@ int vtkISRDistanceFilter::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
+  this->UpdateProgress(0.0);
   output->ShallowCopy(input);
   const vtkIdType pointCount = input->GetNumberOfPoints();
   vtkNew<vtkFloatArray> distances;
@@ -44,6 +45,7 @@ int vtkISRDistanceFilter::RequestData(
   if (pointCount == 0 || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
   {
     this->LastComputeSeconds = 0.0;
+    this->UpdateProgress(1.0);
     return 1;
   }
 
@@ -59,12 +61,16 @@ int vtkISRDistanceFilter::RequestData(
     normals = normalFilter->GetOutput()->GetPointData()->GetNormals();
     output->GetPointData()->SetNormals(normals);
   }
+  // Coarse steps: normals, triangles and the copy come first; the ray casts that follow are
+  // one call into the C core, which reports nothing while it runs.
+  this->UpdateProgress(0.1);
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputData(input);
   triangles->PassLinesOff();
   triangles->PassVertsOff();
   triangles->Update();
   vtkPolyData* mesh = triangles->GetOutput();
+  this->UpdateProgress(0.2);
 
   std::vector<float> positions(3 * pointCount);
   std::vector<float> normalValues(3 * pointCount);
@@ -95,6 +101,7 @@ int vtkISRDistanceFilter::RequestData(
       }
     }
   }
+  this->UpdateProgress(0.3);
   const rf_status status = rf_normal_distances(positions.data(), normalValues.data(),
     static_cast<size_t>(pointCount), indices.data(), indices.size() / 3,
     static_cast<float*>(distances->GetVoidPointer(0)));
@@ -105,5 +112,6 @@ int vtkISRDistanceFilter::RequestData(
     vtkErrorMacro("Cannot compute ISR distances: " << rf_status_message(status));
     distances->Fill(0.0);
   }
+  this->UpdateProgress(1.0);
   return 1;
 }

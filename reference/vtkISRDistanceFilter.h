@@ -11,7 +11,8 @@
  * avoids.
  *
  * Point normals are taken from the input when present, else computed (without splitting,
- * so point ids are kept) and added to the output.
+ * so point ids are kept) and added to the output. The filter reports ProgressEvent at the
+ * start, after each preparation stage and at the end (the ray casts are one step).
  */
 #ifndef vtkISRDistanceFilter_h
 #define vtkISRDistanceFilter_h

@@ -27,7 +27,11 @@
  * surface->SetInputConnection(blobs->GetOutputPort());
  * surface->SetValue(0, blobs->GetIsoValue());
  * surface->ComputeNormalsOn();
- * surface->UpdateTimeStep(0.25); // or let a mapper pull a time set downstream
+ * mapper->SetInputConnection(surface->GetOutputPort());
+ * // Request the time on the algorithm the mapper pulls from (here the contour filter): a
+ * // request on an algorithm further up leaves the filters below it at their old time step.
+ * mapper->GetInputAlgorithm()->UpdateTimeStep(0.25);
+ * renderWindow->Render();
  * @endcode
  */
 
@@ -35,9 +39,9 @@
 #define vtkMetaballsSource_h
 
 #include "vtkImageAlgorithm.h"
-#include "vtkRenderingRefractionModule.h" // For export macro
+#include "vtkRefractionDataModule.h" // For export macro
 
-class VTKRENDERINGREFRACTION_EXPORT vtkMetaballsSource : public vtkImageAlgorithm
+class VTKREFRACTIONDATA_EXPORT vtkMetaballsSource : public vtkImageAlgorithm
 {
 public:
   static vtkMetaballsSource* New();

@@ -1,0 +1,21 @@
+# Runs a program and checks its exit code and output; optionally runs a check afterwards.
+#   -DRUN=prog|arg|arg...     the program and its arguments, separated by |
+#   -DEXIT_CODE=N                 the exit code it must return
+#   -DMATCH=regex             a regular expression its stdout+stderr must match (optional)
+#   -DCHECK=prog|arg|...      a command that must then succeed (optional)
+string(REPLACE "|" ";" run "${RUN}")
+execute_process(COMMAND ${run} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("${out}${err}")
+if (NOT "${rc}" STREQUAL "${EXIT_CODE}")
+  message(FATAL_ERROR "exit code ${rc}, expected ${EXIT_CODE}")
+endif ()
+if (DEFINED MATCH AND NOT "${out}${err}" MATCHES "${MATCH}")
+  message(FATAL_ERROR "the output does not match: ${MATCH}")
+endif ()
+if (DEFINED CHECK)
+  string(REPLACE "|" ";" check "${CHECK}")
+  execute_process(COMMAND ${check} RESULT_VARIABLE checkRc)
+  if (NOT checkRc EQUAL 0)
+    message(FATAL_ERROR "the check failed (${checkRc})")
+  endif ()
+endif ()

@@ -1,4 +1,4 @@
-# cmake -DSOURCE_DIR=... -DBINARY_DIR=... -DPREFIX=... [-DCONFIGURE_ONLY=ON]
+# cmake -DSOURCE_DIR=... -DBINARY_DIR=... -DPREFIX=... [-DCONFIGURE_ONLY=ON] [-DCONFIGURE_ARGS=a;b]
 #       [-DPROGRAM=name -DPROGRAM_ARGS=a;b;...] -P RunConsumer.cmake
 # Configures a consumer project against the installed PREFIX from an empty build folder,
 # builds it and runs its program: each step fails the test with the step's output.
@@ -22,6 +22,7 @@ endfunction ()
 file(REMOVE_RECURSE "${BINARY_DIR}")
 set(configure_args -S "${SOURCE_DIR}" -B "${BINARY_DIR}" -DCMAKE_BUILD_TYPE=Release
   "-DCMAKE_PREFIX_PATH=${PREFIX}" "-DEXPECTED_PREFIX=${PREFIX}")
+list(APPEND configure_args ${CONFIGURE_ARGS})
 if (DEFINED GENERATOR)
   list(APPEND configure_args -G "${GENERATOR}")
 endif ()

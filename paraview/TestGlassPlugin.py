@@ -3,7 +3,7 @@
 Loads the RefractionGlass plugin, shows a contour of the Wavelet source as Glass in a
 GlassRenderView, and checks that the view's pass drew one glass prop and that the picture
 differs from the same contour shown as Surface. Writes glass.png and surface.png into
-OUTPUT_DIR. Exit status 0 on success.
+OUTPUT_DIR. Exit status 0 on success; an exception (non-zero) on failure.
 """
 import os
 import sys
@@ -40,7 +40,8 @@ def main(plugin, output_dir):
     Render(view)
     glass_path = os.path.join(output_dir, "glass.png")
     SaveScreenshot(glass_path, view, ImageResolution=[200, 200])
-    glass_props = view.GetClientSideObject().GetNumberOfGlassProps()
+    view.UpdatePropertyInformation()
+    glass_props = view.GetProperty("NumberOfGlassProps").GetElement(0)
 
     display.SetRepresentationType("Surface")
     Render(view)
@@ -54,16 +55,14 @@ def main(plugin, output_dir):
     error = difference.GetThresholdedError()
     print("glass props drawn: %d; Glass against Surface: thresholded error %.1f" % (glass_props, error))
     if glass_props != 1:
-        print("FAILED: the view's pass drew %d glass props, expected 1" % glass_props)
-        return 1
+        raise RuntimeError("the view's pass drew %d glass props, expected 1" % glass_props)
     if not error > MIN_GLASS_DIFFERENCE:
-        print("FAILED: Glass looks like Surface")
-        return 1
-    return 0
+        raise RuntimeError("Glass looks like Surface")
 
 
-if __name__ == "__main__":
-    if len(sys.argv) != 3:
-        print(__doc__)
-        sys.exit(2)
-    sys.exit(main(sys.argv[1], sys.argv[2]))
+# Failures raise (pvbatch then exits non-zero); success just ends the script. sys.exit() would
+# end the process from inside Python, before pvbatch finalizes its session: the views would be
+# destroyed by static destructors at exit, when the GL context can no longer be made current.
+if len(sys.argv) != 3:
+    raise RuntimeError(__doc__)
+main(sys.argv[1], sys.argv[2])

@@ -7,8 +7,15 @@
 # paraview/build and runs ctest there (pvbatch under xvfb-run when there is no display).
 set -euo pipefail
 cd "$(dirname "$0")"
-packages=(cmake g++ make paraview-dev python3-paraview python3-dev libgl1-mesa-dri
-  libegl-dev xvfb xauth)
+# paraview-dev's CMake config finds every external library its VTK 9.2 links (MPI, HDF5,
+# GLEW, ...) and fails on the first one whose headers are missing, but the package depends on
+# none of their -dev packages: they are listed here.
+packages=(cmake g++ make paraview-dev python3-paraview python3-dev libgl1-mesa-dri libegl-dev
+  xvfb xauth
+  mpi-default-dev libhdf5-mpi-dev python3-mpi4py libboost-dev libdouble-conversion-dev
+  libeigen3-dev libexpat1-dev libfreetype-dev libgl-dev libgl2ps-dev libglew-dev libjpeg-dev
+  liblz4-dev liblzma-dev libnetcdf-dev libpng-dev libtheora-dev libtiff-dev libutfcpp-dev
+  libx11-dev libxml2-dev zlib1g-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

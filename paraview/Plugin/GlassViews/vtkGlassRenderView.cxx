@@ -9,14 +9,18 @@ vtkStandardNewMacro(vtkGlassRenderView);
 vtkGlassRenderView::vtkGlassRenderView()
   : GlassPass(vtkSmartPointer<vtkRefractionPass>::New())
 {
+  this->SynchronizedRenderers->SetRenderPass(this->GlassPass);
 }
 
 vtkGlassRenderView::~vtkGlassRenderView() = default;
 
-void vtkGlassRenderView::Initialize(unsigned int id)
+void vtkGlassRenderView::AboutToRenderOnLocalProcess(bool interactive)
 {
-  this->Superclass::Initialize(id);
-  this->SynchronizedRenderers->SetRenderPass(this->GlassPass);
+  this->Superclass::AboutToRenderOnLocalProcess(interactive);
+  if (this->SynchronizedRenderers->GetRenderPass() != this->GlassPass)
+  {
+    this->SynchronizedRenderers->SetRenderPass(this->GlassPass);
+  }
 }
 
 void vtkGlassRenderView::SetGlassMethod(int method)

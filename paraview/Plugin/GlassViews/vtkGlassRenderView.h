@@ -2,7 +2,8 @@
  * @class   vtkGlassRenderView
  * @brief   ParaView's render view drawing through vtkRefractionPass.
  *
- * The pass is set on the view's renderer through its synchronized renderers; representations
+ * The pass is the geometry pass of the view's synchronized renderers (set again before each
+ * local render, should the view have replaced it); representations
  * of type "Glass" (vtkGlassRepresentation) are drawn as refractive glass, every other one as
  * in a plain render view.
  */
@@ -22,8 +23,6 @@ public:
   vtkTypeMacro(vtkGlassRenderView, vtkPVRenderView);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  void Initialize(unsigned int id) override;
-
   ///@{
   /// The pass's method: vtkRefractionPass::SIR (0), DIR (1, default), ISR (2), SSP (3).
   void SetGlassMethod(int method);
@@ -36,6 +35,8 @@ public:
 protected:
   vtkGlassRenderView();
   ~vtkGlassRenderView() override;
+
+  void AboutToRenderOnLocalProcess(bool interactive) override;
 
   vtkSmartPointer<vtkRefractionPass> GlassPass;
 

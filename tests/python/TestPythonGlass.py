@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
 """Python tests of the wrapped modules (ctest label "python").
 
-    TestPythonGlass.py contour EXAMPLES_DIR -V BASELINE.png -T OUTPUT_DIR
+    TestPythonGlass.py contour EXAMPLES_DIR [--package-under DIR] -V BASELINE.png -T OUTPUT_DIR
         renders examples/glass_contour.py's scene and compares it with the baseline through
         VTK's vtkTesting (the C++ tests' machinery); the same scene drawn without the glass
-        must differ from it (the pass really drew glass from Python).
+        must differ from it (the pass really drew glass from Python). With --package-under,
+        the package "refraction" must be imported from DIR (the installed one, not the build
+        tree's).
     TestPythonGlass.py reference EXAMPLES_DIR
         the Reference module from Python: vtkISRDistanceFilter adds positive, finite d_N to
         the contour, and vtkRefractionReference traces the scene's glass.
@@ -116,7 +118,17 @@ def main(argv):
     import glass_contour
 
     if argv[0] == "contour":
-        return test_contour(glass_contour, argv[2:])
+        rest = argv[2:]
+        if rest[:1] == ["--package-under"]:
+            import refraction
+
+            expected = os.path.realpath(rest[1])
+            found = os.path.realpath(refraction.__file__)
+            print("refraction imported from %s" % found)
+            if not found.startswith(expected + os.sep):
+                return fail("refraction imported from %s, not from under %s" % (found, expected))
+            rest = rest[2:]
+        return test_contour(glass_contour, rest)
     return test_reference(glass_contour)
 
 

@@ -4,6 +4,9 @@
 set -euo pipefail
 packages=(cmake g++ make pkg-config libvtk9-dev libglew-dev libegl-dev libegl-mesa0
   libgl1-mesa-dri xvfb xauth libopenimageio-dev libembree-dev)
+# The Python wrapping (vtk_module_wrap_python) and the python tests: VTK's Python modules and
+# wrapper tools, and the headers of the system python3 they were built for.
+packages+=(python3-vtk9 python3-dev)
 # clang with libFuzzer (Debian keeps it in libclang-rt-14-dev): the fuzz test of the C core.
 packages+=(clang libclang-rt-14-dev)
 missing=()

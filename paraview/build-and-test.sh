@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Builds the ParaView plugin and runs its test, on Debian bookworm with ParaView 5.11.
+# ParaView's packages conflict with libvtk9-dev and python3-vtk9 (the main project's), so run
+# this on a machine without them, e.g. a fresh root:
+#   ../shared/tools/fresh-debian.sh 'bash paraview/build-and-test.sh'
+# It installs what is missing (apt-get, as root or through sudo), builds into
+# paraview/build and runs ctest there (pvbatch under xvfb-run when there is no display).
+set -euo pipefail
+cd "$(dirname "$0")"
+# paraview-dev's CMake config finds every external library its VTK 9.2 links (MPI, HDF5,
+# GLEW, ...) and fails on the first one whose headers are missing, but the package depends on
+# none of their -dev packages: they are listed here.
+packages=(cmake g++ make paraview-dev python3-paraview python3-dev libgl1-mesa-dri libegl-dev
+  xvfb xauth
+  mpi-default-dev libhdf5-mpi-dev python3-mpi4py libboost-dev libdouble-conversion-dev
+  libeigen3-dev libexpat1-dev libfreetype-dev libgl-dev libgl2ps-dev libglew-dev libjpeg-dev
+  liblz4-dev liblzma-dev libnetcdf-dev libpng-dev libtheora-dev libtiff-dev libutfcpp-dev
+  libx11-dev libxml2-dev zlib1g-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  run=()
+  [ "$(id -u)" -ne 0 ] && run=(sudo)
+  export DEBIAN_FRONTEND=noninteractive
+  "${run[@]}" apt-get update -qq
+  "${run[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j "$(nproc)"
+cd build
+runner=()
+if [ -z "${DISPLAY:-}" ]; then
+  runner=(xvfb-run -a -s "-screen 0 1280x1024x24")
+fi
+"${runner[@]}" ctest --output-on-failure "$@"

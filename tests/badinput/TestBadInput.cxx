@@ -6,14 +6,12 @@
 //    the bad actor (or with it as an ordinary actor, where it is drawn as one);
 //  - no OpenGL error left by the pass, and no crash.
 // Usage: TestBadInput CASE [WORKDIR]
-#include "../common/rf_require.h"
-#include "../stability/rfStability.h"
+#include "rfTestRig.h"
 
 #ifdef REFRACTION_HAVE_IO
 #include "vtkRefractionImageIO.h"
 #endif
 
-#include <vtkConeSource.h>
 #include <vtkCellArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationDoubleKey.h>
@@ -21,7 +19,6 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkProperty.h>
-#include <vtkSphereSource.h>
 #include <vtkVertexGlyphFilter.h>
 
 #include <cstdlib>
@@ -30,7 +27,7 @@
 #include <limits>
 #include <sstream>
 
-using namespace rfstab;
+using namespace rftest;
 
 namespace
 {
@@ -44,44 +41,19 @@ std::string Address(const void* p)
   return s.str();
 }
 
+// A sphere of 48 x 48 facets on the x axis.
 vtkSmartPointer<vtkPolyData> Sphere(double x, double radius)
 {
-  vtkNew<vtkSphereSource> source;
-  source->SetCenter(x, 0.0, 0.0);
-  source->SetRadius(radius);
-  source->SetThetaResolution(48);
-  source->SetPhiResolution(48);
-  source->Update();
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->DeepCopy(source->GetOutput());
-  return poly;
-}
-
-vtkSmartPointer<vtkActor> Actor(vtkPolyData* poly)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(poly);
-  mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  return actor;
+  const double centre[3] = { x, 0.0, 0.0 };
+  return SpherePoly(centre, radius, 48);
 }
 
 // The rest of the scene: a good glass sphere on the right and an opaque cone at the top.
 void AddRest(Rig& rig)
 {
-  auto glass = Actor(Sphere(1.2, 0.7));
-  vtkRefractionPass::MakeGlass(glass, 1.5);
-  rig.Renderer->AddActor(glass);
-  vtkNew<vtkConeSource> cone;
-  cone->SetCenter(0.0, 1.1, 0.0);
-  cone->SetHeight(0.8);
-  cone->SetRadius(0.4);
-  cone->SetResolution(24);
-  cone->Update();
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->DeepCopy(cone->GetOutput());
-  auto opaque = Actor(poly);
+  rig.Renderer->AddActor(GlassActor(Sphere(1.2, 0.7), 1.5));
+  const double top[3] = { 0.0, 1.1, 0.0 };
+  auto opaque = ActorFor(ConePoly(top, 0.8, 0.4, 24));
   opaque->GetProperty()->SetColor(0.9, 0.3, 0.2);
   rig.Renderer->AddActor(opaque);
 }
@@ -101,7 +73,7 @@ Frame Reference(vtkPolyData* subject)
   AddRest(rig);
   if (subject)
   {
-    rig.Renderer->AddActor(Actor(subject));
+    rig.Renderer->AddActor(ActorFor(subject));
   }
   Look(rig);
   return rig.Render();
@@ -172,7 +144,7 @@ int NonFinitePoints(MessageLog* log, bool infinite)
   }
   Rig rig(kSize, kSize);
   AddRest(rig);
-  auto subject = Actor(poly);
+  auto subject = ActorFor(poly);
   RF_REQUIRE(vtkRefractionPass::MakeGlass(subject, 1.5), "MakeGlass refused a valid IOR");
   rig.Renderer->AddActor(subject);
   Look(rig);
@@ -205,7 +177,7 @@ int EmptyPolyData(MessageLog* log)
   vtkNew<vtkPolyData> empty;
   Rig rig(kSize, kSize);
   AddRest(rig);
-  auto subject = Actor(empty);
+  auto subject = ActorFor(empty);
   vtkRefractionPass::MakeGlass(subject, 1.5);
   rig.Renderer->AddActor(subject);
   Look(rig);
@@ -244,7 +216,7 @@ int WithoutPolygons(MessageLog* log, bool lines)
   }
   Rig rig(kSize, kSize);
   AddRest(rig);
-  auto subject = Actor(poly);
+  auto subject = ActorFor(poly);
   vtkRefractionPass::MakeGlass(subject, 1.5);
   rig.Renderer->AddActor(subject);
   Look(rig);
@@ -261,7 +233,7 @@ int BadIndex(MessageLog* log, double ior, const char* printed)
   auto poly = Sphere(-1.2, 0.7);
   Rig rig(kSize, kSize);
   AddRest(rig);
-  auto subject = Actor(poly);
+  auto subject = ActorFor(poly);
   RF_REQUIRE(!vtkRefractionPass::MakeGlass(subject, ior), "MakeGlass accepted IOR %g", ior);
   RF_REQUIRE(!vtkRefractionPass::IsGlass(subject), "the actor is marked as glass");
   RF_REQUIRE(log->Count("error", { "MakeGlass", subject->GetClassName(), Address(subject.Get()), printed }) ==
@@ -293,7 +265,7 @@ int ZeroViewport(MessageLog* log)
   empty->SetPass(pass);
   empty->SetViewport(0.25, 0.25, 0.25, 0.25);
   empty->SetLayer(0);
-  auto glass = Actor(Sphere(0.0, 1.0));
+  auto glass = ActorFor(Sphere(0.0, 1.0));
   vtkRefractionPass::MakeGlass(glass, 1.5);
   empty->AddActor(glass);
   rig.Window->AddRenderer(empty);

@@ -13,14 +13,10 @@
 #include "vtkMetaballsSource.h"
 
 #include <vtkCellArray.h>
-#include <vtkCubeSource.h>
 #include <vtkFlyingEdges3D.h>
-#include <vtkFloatArray.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataConnectivityFilter.h>
-#include <vtkSphereSource.h>
-#include <vtkTransform.h>
 #include <vtksys/Directory.hxx>
 #include <vtksys/SystemTools.hxx>
 
@@ -28,7 +24,6 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
-#include <map>
 #include <set>
 #include <sstream>
 

@@ -288,35 +288,58 @@ int PassThroughCase(int argc, char* argv[])
   RF_REQUIRE(rftest::MaxChannelDifference(plain, cleared) == 0, "ClearGlass left a difference");
   return Finish(argc, argv, window);
 }
+int SphereDIRCase(int argc, char* argv[])
+{
+  return SphereCase(argc, argv, false);
+}
+
+int SphereSIRCase(int argc, char* argv[])
+{
+  return SphereCase(argc, argv, true);
+}
+
+int ISRSphereCase(int argc, char* argv[])
+{
+  return ISRCase(argc, argv, false);
+}
+
+int ISRTorusCase(int argc, char* argv[])
+{
+  return ISRCase(argc, argv, true);
+}
+
+// The table of scenes (rfGlassScenes.def, which CMake reads too: each listed scene is the test
+// regression.<name> against tests/baselines/TestGlassScenes_<name>.png).
+struct Scene
+{
+  const char* Name;
+  int (*Function)(int argc, char* argv[]);
+};
+
+const Scene kScenes[] = {
+#define RF_GLASS_SCENE(name, function) { name, function },
+#include "rfGlassScenes.def"
+#undef RF_GLASS_SCENE
+};
 }
 
 int main(int argc, char* argv[])
 {
-  if (argc < 2)
+  if (argc >= 2)
   {
-    std::fprintf(stderr, "usage: TestGlassScenes sphere|sir|torus|isosurface|opaque|passthrough "
-                         "-V baseline.png -T outdir\n");
-    return EXIT_FAILURE;
+    for (const Scene& scene : kScenes)
+    {
+      if (std::strcmp(argv[1], scene.Name) == 0)
+      {
+        return scene.Function(argc, argv);
+      }
+    }
   }
-  const std::string which = argv[1];
-  if (which == "sphere")
-    return SphereCase(argc, argv, false);
-  if (which == "sir")
-    return SphereCase(argc, argv, true);
-  if (which == "torus")
-    return TorusCase(argc, argv);
-  if (which == "isosurface")
-    return IsosurfaceCase(argc, argv);
-  if (which == "opaque")
-    return OpaqueOrderCase(argc, argv);
-  if (which == "ssp")
-    return SSPCase(argc, argv);
-  if (which == "isr_sphere")
-    return ISRCase(argc, argv, false);
-  if (which == "isr_torus")
-    return ISRCase(argc, argv, true);
-  if (which == "passthrough")
-    return PassThroughCase(argc, argv);
-  std::fprintf(stderr, "unknown case %s\n", which.c_str());
+  std::fprintf(stderr, "usage: TestGlassScenes SCENE -V baseline.png -T outdir; SCENE is one of");
+  for (const Scene& scene : kScenes)
+  {
+    std::fprintf(stderr, " %s", scene.Name);
+  }
+  std::fprintf(stderr, "\n");
   return EXIT_FAILURE;
 }

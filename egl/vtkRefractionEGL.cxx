@@ -1,5 +1,8 @@
 #include "vtkRefractionEGL.h"
 
+#include <vtkCommand.h>
+#include <vtkNew.h>
+
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <GL/glew.h>
@@ -57,6 +60,47 @@ EGLDisplay OpenDisplay(std::string& which)
   }
   return EGL_NO_DISPLAY;
 }
+
+// vtkGenericOpenGLRenderWindow asks its observers to make its context current and to say
+// whether it is: with two windows in one process each must switch back to its own context.
+// The window owns this observer and deletes it after its own destructor has released its
+// OpenGL resources, so the context outlives them.
+class EGLContextKeeper : public vtkCommand
+{
+public:
+  static EGLContextKeeper* New() { return new EGLContextKeeper; }
+
+  EGLDisplay Display = EGL_NO_DISPLAY;
+  EGLSurface Surface = EGL_NO_SURFACE;
+  EGLContext Context = EGL_NO_CONTEXT;
+
+  void Execute(vtkObject*, unsigned long event, void* callData) override
+  {
+    if (event == vtkCommand::WindowMakeCurrentEvent)
+    {
+      if (eglGetCurrentContext() != this->Context)
+      {
+        eglMakeCurrent(this->Display, this->Surface, this->Surface, this->Context);
+      }
+    }
+    else if (event == vtkCommand::WindowIsCurrentEvent && callData)
+    {
+      *static_cast<bool*>(callData) = eglGetCurrentContext() == this->Context;
+    }
+  }
+
+protected:
+  EGLContextKeeper() = default;
+  ~EGLContextKeeper() override
+  {
+    if (eglGetCurrentContext() == this->Context)
+    {
+      eglMakeCurrent(this->Display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    }
+    eglDestroyContext(this->Display, this->Context);
+    eglDestroySurface(this->Display, this->Surface);
+  }
+};
 }
 
 vtkSmartPointer<vtkGenericOpenGLRenderWindow> vtkRefractionCreateEGLWindow(
@@ -99,13 +143,30 @@ vtkSmartPointer<vtkGenericOpenGLRenderWindow> vtkRefractionCreateEGLWindow(
   EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttributes);
   if (context == EGL_NO_CONTEXT || !eglMakeCurrent(display, surface, surface, context))
   {
+    if (context != EGL_NO_CONTEXT)
+    {
+      eglDestroyContext(display, context);
+    }
+    eglDestroySurface(display, surface);
     return fail("cannot create or make current an OpenGL 4.5 core EGL context");
   }
   auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  vtkNew<EGLContextKeeper> keeper;
+  keeper->Display = display;
+  keeper->Surface = surface;
+  keeper->Context = context;
+  window->AddObserver(vtkCommand::WindowMakeCurrentEvent, keeper);
+  window->AddObserver(vtkCommand::WindowIsCurrentEvent, keeper);
   window->SetSize(width, height);
   window->SetReadyForRendering(true);
   window->SetIsCurrent(true);
   window->SetMultiSamples(0);
+  // VTK's own windows start their context with VTK's default state (depth function
+  // GL_LEQUAL); a vtkGenericOpenGLRenderWindow adopts the context's state instead, GL_LESS
+  // on a new context. This context is new and the window's alone, so give it VTK's default:
+  // code that relies on it (the refraction pass's SSP front stage, measured) then behaves
+  // as in VTK's own windows.
+  glDepthFunc(GL_LEQUAL);
   window->InitializeFromCurrentContext();
   if (description)
   {

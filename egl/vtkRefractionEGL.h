@@ -20,7 +20,9 @@
 /**
  * Create a window of width x height rendering into a new EGL pbuffer context. Returns
  * nullptr and a message in *error when no EGL display or context can be had.
- * *description receives the EGL display used and GL_RENDERER.
+ * *description receives the EGL display used and GL_RENDERER. Each window has its own
+ * context, made current whenever VTK makes the window current (several windows may live in
+ * one process), and destroyed with the window.
  */
 vtkSmartPointer<vtkGenericOpenGLRenderWindow> vtkRefractionCreateEGLWindow(
   int width, int height, std::string* error, std::string* description = nullptr);

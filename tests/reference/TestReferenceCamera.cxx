@@ -4,7 +4,8 @@
 // the same camera. The centroids of the two masks must agree to a small fraction of a
 // pixel (a half-pixel offset of the pixel centres, a wrong aspect ratio or a missing actor
 // matrix would move them by 0.5 px or more), and the masks may differ only along the
-// outline. Checked in perspective and with a parallel projection. Needs X (xvfb-run -a).
+// outline. Checked in perspective and with a parallel projection. Renders through EGL.
+#include "rfTestWindow.h"
 #include "vtkRefractionPass.h"
 #include "vtkRefractionReference.h"
 
@@ -86,10 +87,8 @@ int main(int, char*[])
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   renderer->SetBackground(0.0, 0.0, 0.0);
-  vtkNew<vtkRenderWindow> window;
+  auto window = rftest::NewRenderWindow(width, height);
   window->SetSize(width, height);
-  window->SetMultiSamples(0);
-  window->SetOffScreenRendering(1);
   window->AddRenderer(renderer);
   vtkCamera* camera = renderer->GetActiveCamera();
 

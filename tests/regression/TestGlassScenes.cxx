@@ -4,8 +4,6 @@
 #include "vtkISRDistanceFilter.h"
 #include "vtkMetaballsSource.h"
 
-#include <vtkConeSource.h>
-#include <vtkCubeSource.h>
 #include <vtkFlyingEdges3D.h>
 #include <vtkRegressionTestImage.h>
 #include <vtkTesting.h>
@@ -20,18 +18,6 @@ namespace
 // for a changed picture (SIR against DIR, two time steps) is orders of magnitude above this.
 constexpr double kThreshold = 0.15;
 constexpr int kSize = 160;
-
-void LookAt(vtkRenderer* renderer, double distance, double elevation)
-{
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetPosition(0.0, 0.0, distance);
-  camera->SetViewUp(0.0, 1.0, 0.0);
-  camera->Elevation(elevation);
-  camera->OrthogonalizeViewUp();
-  camera->SetViewAngle(30.0);
-  renderer->ResetCameraClippingRange();
-}
 
 int Finish(int argc, char* argv[], vtkRenderWindow* window)
 {
@@ -49,7 +35,7 @@ int SphereCase(int argc, char* argv[], bool sir)
   vtkNew<vtkRefractionPass> glass;
   renderer->SetPass(glass);
   auto window = rftest::MakeWindow(renderer, kSize, kSize);
-  LookAt(renderer, 5.0, 15.0);
+  rftest::LookAtOrigin(renderer, 5.0, 15.0);
   window->Render();
   RF_REQUIRE(glass->GetNumberOfGlassProps() == 1, "the sphere is not drawn as glass");
   auto dir = rftest::Grab(window);
@@ -73,7 +59,7 @@ int TorusCase(int argc, char* argv[])
   vtkNew<vtkRefractionPass> glass;
   renderer->SetPass(glass);
   auto window = rftest::MakeWindow(renderer, kSize, kSize);
-  LookAt(renderer, 4.5, 10.0);
+  rftest::LookAtOrigin(renderer, 4.5, 10.0);
   return Finish(argc, argv, window);
 }
 
@@ -85,7 +71,7 @@ int IsosurfaceCase(int argc, char* argv[])
   surface->SetInputConnection(blobs->GetOutputPort());
   surface->SetValue(0, blobs->GetIsoValue());
   surface->ComputeNormalsOn();
-  auto actor = rftest::MakeActor(surface->GetOutputPort());
+  auto actor = rftest::ActorFor(surface->GetOutputPort());
   vtkRefractionPass::MakeGlass(actor, 1.5);
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
@@ -93,7 +79,7 @@ int IsosurfaceCase(int argc, char* argv[])
   renderer->SetPass(glass);
   auto window = rftest::MakeWindow(renderer, kSize, kSize);
   surface->UpdateTimeStep(0.0);
-  LookAt(renderer, 5.5, 20.0);
+  rftest::LookAtOrigin(renderer, 5.5, 20.0);
   window->Render();
   auto first = rftest::Grab(window);
   surface->UpdateTimeStep(0.3 * blobs->GetTimePeriod());
@@ -112,29 +98,18 @@ int OpaqueOrderCase(int argc, char* argv[])
   vtkNew<vtkRenderer> renderer;
   auto sphere = rftest::MakeSphere(1.0, 64);
   vtkRefractionPass::MakeGlass(sphere, 1.5);
-  vtkNew<vtkCubeSource> cube;
-  cube->SetCenter(0.6, 0.0, 1.5);
-  cube->SetXLength(0.4);
-  cube->SetYLength(0.4);
-  cube->SetZLength(0.4);
-  auto front = rftest::MakeActor(cube->GetOutputPort());
-  front->GetProperty()->LightingOff();
-  front->GetProperty()->SetColor(0.0, 1.0, 0.0);
-  vtkNew<vtkConeSource> cone;
-  cone->SetCenter(-1.2, 0.0, -2.0);
-  cone->SetHeight(1.2);
-  cone->SetRadius(0.5);
-  cone->SetResolution(32);
-  auto back = rftest::MakeActor(cone->GetOutputPort());
-  back->GetProperty()->LightingOff();
-  back->GetProperty()->SetColor(1.0, 0.0, 0.0);
+  const double cubeCentre[3] = { 0.6, 0.0, 1.5 };
+  const double cubeSize[3] = { 0.4, 0.4, 0.4 };
+  auto front = rftest::FlatActor(rftest::BoxPoly(cubeSize, cubeCentre), 0.0, 1.0, 0.0);
+  const double coneCentre[3] = { -1.2, 0.0, -2.0 };
+  auto back = rftest::FlatActor(rftest::ConePoly(coneCentre, 1.2, 0.5, 32), 1.0, 0.0, 0.0);
   renderer->AddActor(sphere);
   renderer->AddActor(front);
   renderer->AddActor(back);
   vtkNew<vtkRefractionPass> glass;
   renderer->SetPass(glass);
   auto window = rftest::MakeWindow(renderer, kSize, kSize);
-  LookAt(renderer, 6.0, 0.0);
+  rftest::LookAtOrigin(renderer, 6.0, 0.0);
   window->Render();
   auto image = rftest::Grab(window);
 
@@ -183,20 +158,12 @@ int SSPCase(int argc, char* argv[])
   vtkNew<vtkRenderer> renderer;
   auto sphere = rftest::MakeSphere(1.0, 64);
   vtkRefractionPass::MakeGlass(sphere, 1.5);
-  vtkNew<vtkCubeSource> cube;
-  cube->SetCenter(0.75, 0.0, 1.5);
-  cube->SetXLength(0.5);
-  cube->SetYLength(0.5);
-  cube->SetZLength(0.2);
-  auto front = rftest::MakeActor(cube->GetOutputPort());
-  front->GetProperty()->LightingOff();
-  front->GetProperty()->SetColor(0.0, 1.0, 0.0);
-  vtkNew<vtkCubeSource> wall;
-  wall->SetCenter(0.0, 0.0, -2.5);
-  wall->SetXLength(6.0);
-  wall->SetYLength(0.8);
-  wall->SetZLength(0.1);
-  auto back = rftest::MakeActor(wall->GetOutputPort());
+  const double cubeCentre[3] = { 0.75, 0.0, 1.5 };
+  const double cubeSize[3] = { 0.5, 0.5, 0.2 };
+  auto front = rftest::FlatActor(rftest::BoxPoly(cubeSize, cubeCentre), 0.0, 1.0, 0.0);
+  const double wallCentre[3] = { 0.0, 0.0, -2.5 };
+  const double wallSize[3] = { 6.0, 0.8, 0.1 };
+  auto back = rftest::ActorFor(rftest::BoxPoly(wallSize, wallCentre));
   back->GetProperty()->SetColor(0.2, 0.3, 0.9);
   renderer->AddActor(sphere);
   renderer->AddActor(front);
@@ -206,7 +173,7 @@ int SSPCase(int argc, char* argv[])
   glass->SetSSPStrength(0.2);
   renderer->SetPass(glass);
   auto window = rftest::MakeWindow(renderer, kSize, kSize);
-  LookAt(renderer, 6.0, 0.0);
+  rftest::LookAtOrigin(renderer, 6.0, 0.0);
 
   // Where the cube itself is drawn: the scene without the glass.
   sphere->VisibilityOff();
@@ -251,7 +218,7 @@ int ISRCase(int argc, char* argv[], bool torus)
   auto shape = torus ? rftest::MakeTorus() : rftest::MakeSphere(1.0, 64);
   vtkNew<vtkISRDistanceFilter> distances;
   distances->SetInputConnection(shape->GetMapper()->GetInputConnection(0, 0));
-  auto actor = rftest::MakeActor(distances->GetOutputPort());
+  auto actor = rftest::ActorFor(distances->GetOutputPort());
   if (torus)
   {
     actor->RotateX(60.0);
@@ -261,7 +228,7 @@ int ISRCase(int argc, char* argv[], bool torus)
   vtkNew<vtkRefractionPass> glass;
   renderer->SetPass(glass);
   auto window = rftest::MakeWindow(renderer, kSize, kSize);
-  LookAt(renderer, torus ? 4.5 : 5.0, torus ? 10.0 : 15.0);
+  rftest::LookAtOrigin(renderer, torus ? 4.5 : 5.0, torus ? 10.0 : 15.0);
   window->Render();
   auto dir = rftest::Grab(window);
   glass->SetMethod(vtkRefractionPass::ISR);
@@ -275,11 +242,17 @@ int ISRCase(int argc, char* argv[], bool torus)
   renderer->AddActor(actor);
   window->Render();
   auto isr = rftest::Grab(window);
-  const int fromDir = rftest::MaxChannelDifference(dir, isr);
+  const double fromDir = rftest::ImageError(dir, isr);
+  const int differing = rftest::DifferingPixels(dir, isr, 2);
   const double fromFallback = rftest::ImageError(isr, withoutDistances);
-  std::printf("ISR against DIR: max channel difference %d; VTK image error of ISR with d_N "
-              "against ISR with d_N = d_V: %g\n", fromDir, fromFallback);
-  RF_REQUIRE(fromDir > 0, "ISR draws exactly DIR's picture");
+  std::printf("ISR against DIR: VTK image error %g, %d pixels differ by more than 2 of 255; VTK "
+              "image error of ISR with d_N against ISR with d_N = d_V: %g\n",
+    fromDir, differing, fromFallback);
+  // ISR is a picture of its own: a regression test at this threshold tells it from DIR, and
+  // not through a few stray pixels but over the glass (a few percent of the window at least;
+  // about 40% of the sphere's pixels differ).
+  RF_REQUIRE(fromDir > kThreshold && differing > kSize * kSize / 50,
+    "ISR draws DIR's picture (VTK image error %g, %d pixels differ)", fromDir, differing);
   RF_REQUIRE(fromFallback > kThreshold, "d_N makes no difference to ISR (%g)", fromFallback);
   return Finish(argc, argv, window);
 }
@@ -290,13 +263,12 @@ int PassThroughCase(int argc, char* argv[])
   vtkNew<vtkRenderer> renderer;
   auto sphere = rftest::MakeSphere(1.0, 32);
   sphere->GetProperty()->SetColor(0.3, 0.6, 0.9);
-  vtkNew<vtkConeSource> cone;
-  cone->SetCenter(1.2, 0.0, 0.0);
-  auto coneActor = rftest::MakeActor(cone->GetOutputPort());
+  const double coneCentre[3] = { 1.2, 0.0, 0.0 };
+  auto coneActor = rftest::ActorFor(rftest::ConePoly(coneCentre, 1.0, 0.5, 6)); // vtkConeSource's defaults
   renderer->AddActor(sphere);
   renderer->AddActor(coneActor);
   auto window = rftest::MakeWindow(renderer, kSize, kSize);
-  LookAt(renderer, 6.0, 10.0);
+  rftest::LookAtOrigin(renderer, 6.0, 10.0);
   window->Render();
   auto plain = rftest::Grab(window);
   vtkNew<vtkRefractionPass> glass;
@@ -316,35 +288,58 @@ int PassThroughCase(int argc, char* argv[])
   RF_REQUIRE(rftest::MaxChannelDifference(plain, cleared) == 0, "ClearGlass left a difference");
   return Finish(argc, argv, window);
 }
+int SphereDIRCase(int argc, char* argv[])
+{
+  return SphereCase(argc, argv, false);
+}
+
+int SphereSIRCase(int argc, char* argv[])
+{
+  return SphereCase(argc, argv, true);
+}
+
+int ISRSphereCase(int argc, char* argv[])
+{
+  return ISRCase(argc, argv, false);
+}
+
+int ISRTorusCase(int argc, char* argv[])
+{
+  return ISRCase(argc, argv, true);
+}
+
+// The table of scenes (rfGlassScenes.def, which CMake reads too: each listed scene is the test
+// regression.<name> against tests/baselines/TestGlassScenes_<name>.png).
+struct Scene
+{
+  const char* Name;
+  int (*Function)(int argc, char* argv[]);
+};
+
+const Scene kScenes[] = {
+#define RF_GLASS_SCENE(name, function) { name, function },
+#include "rfGlassScenes.def"
+#undef RF_GLASS_SCENE
+};
 }
 
 int main(int argc, char* argv[])
 {
-  if (argc < 2)
+  if (argc >= 2)
   {
-    std::fprintf(stderr, "usage: TestGlassScenes sphere|sir|torus|isosurface|opaque|passthrough "
-                         "-V baseline.png -T outdir\n");
-    return EXIT_FAILURE;
+    for (const Scene& scene : kScenes)
+    {
+      if (std::strcmp(argv[1], scene.Name) == 0)
+      {
+        return scene.Function(argc, argv);
+      }
+    }
   }
-  const std::string which = argv[1];
-  if (which == "sphere")
-    return SphereCase(argc, argv, false);
-  if (which == "sir")
-    return SphereCase(argc, argv, true);
-  if (which == "torus")
-    return TorusCase(argc, argv);
-  if (which == "isosurface")
-    return IsosurfaceCase(argc, argv);
-  if (which == "opaque")
-    return OpaqueOrderCase(argc, argv);
-  if (which == "ssp")
-    return SSPCase(argc, argv);
-  if (which == "isr_sphere")
-    return ISRCase(argc, argv, false);
-  if (which == "isr_torus")
-    return ISRCase(argc, argv, true);
-  if (which == "passthrough")
-    return PassThroughCase(argc, argv);
-  std::fprintf(stderr, "unknown case %s\n", which.c_str());
+  std::fprintf(stderr, "usage: TestGlassScenes SCENE -V baseline.png -T outdir; SCENE is one of");
+  for (const Scene& scene : kScenes)
+  {
+    std::fprintf(stderr, " %s", scene.Name);
+  }
+  std::fprintf(stderr, "\n");
   return EXIT_FAILURE;
 }

@@ -13,23 +13,21 @@
 #include "vtkMetaballsSource.h"
 
 #include <vtkCellArray.h>
-#include <vtkCubeSource.h>
 #include <vtkFlyingEdges3D.h>
-#include <vtkFloatArray.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataConnectivityFilter.h>
-#include <vtkSphereSource.h>
-#include <vtkTransform.h>
+#include <vtksys/Directory.hxx>
 #include <vtksys/SystemTools.hxx>
 
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <functional>
-#include <map>
+#include <set>
 #include <sstream>
 
+using namespace rftest;
 using namespace rfstab;
 
 namespace
@@ -45,33 +43,6 @@ constexpr double kDeltaT2Bound = 0.5; // degrees
 // Under the smooth environment (colours change by at most ~2 per radian of direction), so the
 // colour bound is the T2 bound's image.
 constexpr double kDeltaColourBound = 0.02;
-
-vtkSmartPointer<vtkActor> ActorFor(vtkPolyData* poly)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(poly);
-  mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  return actor;
-}
-
-vtkSmartPointer<vtkPolyData> SpherePoly(
-  const double centre[3], double radius, int resolution, bool doublePoints, double endPhi = 180.0)
-{
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(centre[0], centre[1], centre[2]);
-  sphere->SetRadius(radius);
-  sphere->SetThetaResolution(resolution);
-  sphere->SetPhiResolution(resolution);
-  sphere->SetEndPhi(endPhi);
-  sphere->SetOutputPointsPrecision(
-    doublePoints ? vtkAlgorithm::DOUBLE_PRECISION : vtkAlgorithm::SINGLE_PRECISION);
-  sphere->Update();
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->DeepCopy(sphere->GetOutput());
-  return poly;
-}
 
 // RF_STABILITY_VERBOSE=1 prints the pixels behind the figures (for diagnosis).
 bool Verbose()
@@ -94,11 +65,86 @@ void DumpPixel(const char* what, const Frame& f, int i, const Trace& t, double e
     p2.x, p2.y, p2.z, t.P2.x, t.P2.y, t.P2.z);
 }
 
-// Scales the actor by 1 + 1e-6 about a point: the geometric perturbation of the cases.
-void PerturbGeometry(vtkActor* actor, const double centre[3])
+//------------------------------------------------------------------------------
+// The one scene set-up of every case: one glass actor (its data, optionally placed by a user
+// matrix) in the probe rig, seen by one camera. RunScene renders it three times: under the
+// built-in environment (Base: what the errors are measured on), under the smooth environment
+// (Smooth), and under the smooth environment with the input perturbed by a relative 1e-6
+// (Perturbed: continuity), then undoes the perturbation.
+struct Scene
 {
-  actor->SetOrigin(centre[0], centre[1], centre[2]);
-  actor->SetScale(1.0 + kPerturbation);
+  vtkSmartPointer<vtkPolyData> Poly;
+  vtkSmartPointer<vtkMatrix4x4> Placement; // user matrix; none: the data's own coordinates
+  double IOR = 1.5;
+  double Eye[3] = { 0.0, 0.0, 4.0 };
+  double Focal[3] = { 0.0, 0.0, 0.0 };
+  double Up[3] = { 0.0, 1.0, 0.0 };
+  double ViewAngle = 40.0;
+  double Near = 1.0;
+  double Far = 10.0;
+  int Width = 96;
+  int Height = 96;
+  bool PerturbIOR = false;                    // else the geometry is scaled by 1 + 1e-6 ...
+  double PerturbCentre[3] = { 0.0, 0.0, 0.0 }; // ... about this point (without a placement)
+};
+
+struct Run
+{
+  std::unique_ptr<Rig> R;
+  vtkSmartPointer<vtkActor> Actor;
+  Frame Base;
+  Frame Smooth;
+  Frame Perturbed;
+};
+
+/// `beforeBase`, when given, runs once the scene is set up, before the Base frame.
+Run RunScene(const Scene& sc, const std::function<void(Run&)>& beforeBase = nullptr)
+{
+  Run run;
+  run.R.reset(new Rig(sc.Width, sc.Height));
+  run.Actor = rftest::GlassActor(sc.Poly, sc.IOR);
+  if (sc.Placement)
+  {
+    run.Actor->SetUserMatrix(sc.Placement);
+  }
+  run.R->Renderer->AddActor(run.Actor);
+  run.R->LookAt(sc.Eye, sc.Focal, sc.Up, sc.ViewAngle, sc.Near, sc.Far);
+  if (beforeBase)
+  {
+    beforeBase(run);
+  }
+  run.Base = run.R->Render();
+  run.R->UseSmoothEnvironment(true);
+  run.Smooth = run.R->Render();
+  vtkNew<vtkMatrix4x4> placed;
+  if (sc.PerturbIOR)
+  {
+    vtkRefractionPass::MakeGlass(run.Actor, sc.IOR * (1.0 + kPerturbation));
+  }
+  else if (sc.Placement)
+  {
+    // Scale the placed local frame about its origin.
+    placed->DeepCopy(sc.Placement);
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        placed->SetElement(r, k, placed->GetElement(r, k) * (1.0 + kPerturbation));
+      }
+    }
+    run.Actor->SetUserMatrix(placed);
+  }
+  else
+  {
+    run.Actor->SetOrigin(sc.PerturbCentre[0], sc.PerturbCentre[1], sc.PerturbCentre[2]);
+    run.Actor->SetScale(1.0 + kPerturbation);
+  }
+  run.Perturbed = run.R->Render();
+  vtkRefractionPass::MakeGlass(run.Actor, sc.IOR);
+  run.Actor->SetScale(1.0);
+  run.Actor->SetUserMatrix(sc.Placement);
+  run.R->UseSmoothEnvironment(false);
+  return run;
 }
 
 //------------------------------------------------------------------------------
@@ -168,47 +214,24 @@ SphereMeasure MeasureSphere(Rig& rig, const Frame& f, const SphereScene& sc,
   return m;
 }
 
-struct SphereRun
+Run RunSphere(const SphereScene& sc, bool perturbIOR)
 {
-  std::unique_ptr<Rig> R;
-  vtkSmartPointer<vtkActor> Actor;
-  Frame Base;      // the built-in environment
-  Frame Smooth;    // the smooth environment (continuity pair, unperturbed)
-  Frame Perturbed; // the smooth environment, input perturbed
-};
-
-SphereRun RunSphere(const SphereScene& sc, bool perturbIOR)
-{
-  SphereRun run;
-  run.R.reset(new Rig(sc.Width, sc.Height));
-  auto poly = sc.Poly ? sc.Poly : SpherePoly(sc.Centre, sc.Radius, sc.Resolution, sc.DoublePoints);
-  run.Actor = ActorFor(poly);
-  vtkRefractionPass::MakeGlass(run.Actor, sc.IOR);
-  run.R->Renderer->AddActor(run.Actor);
-  run.R->LookAt(
-    sc.Eye, sc.FocalAtCentre ? sc.Centre : sc.Focal, sc.Up, sc.ViewAngle, sc.Near, sc.Far);
-  run.Base = run.R->Render();
-  run.R->UseSmoothEnvironment(true);
-  run.Smooth = run.R->Render();
-  if (perturbIOR)
-  {
-    vtkRefractionPass::MakeGlass(run.Actor, sc.IOR * (1.0 + kPerturbation));
-  }
-  else
-  {
-    PerturbGeometry(run.Actor, sc.Centre);
-  }
-  run.Perturbed = run.R->Render();
-  if (perturbIOR)
-  {
-    vtkRefractionPass::MakeGlass(run.Actor, sc.IOR);
-  }
-  else
-  {
-    run.Actor->SetScale(1.0);
-  }
-  run.R->UseSmoothEnvironment(false);
-  return run;
+  Scene scene;
+  scene.Poly = sc.Poly ? sc.Poly
+                       : rftest::SpherePoly(sc.Centre, sc.Radius, sc.Resolution, sc.DoublePoints);
+  scene.IOR = sc.IOR;
+  std::copy(sc.Eye, sc.Eye + 3, scene.Eye);
+  std::copy(sc.FocalAtCentre ? sc.Centre : sc.Focal, (sc.FocalAtCentre ? sc.Centre : sc.Focal) + 3,
+    scene.Focal);
+  std::copy(sc.Up, sc.Up + 3, scene.Up);
+  scene.ViewAngle = sc.ViewAngle;
+  scene.Near = sc.Near;
+  scene.Far = sc.Far;
+  scene.Width = sc.Width;
+  scene.Height = sc.Height;
+  scene.PerturbIOR = perturbIOR;
+  std::copy(sc.Centre, sc.Centre + 3, scene.PerturbCentre);
+  return RunScene(scene);
 }
 
 // Continuity is measured under the smooth environment (Rig::UseSmoothEnvironment): the
@@ -320,10 +343,10 @@ SphereScene IORScene(double ior)
   return sc;
 }
 
-Row CaseIORExactlyOne()
+Row CaseIORExactlyOne(const char* name)
 {
   Row row;
-  row.Case = "ior_exactly_1";
+  row.Case = name;
   row.Measure = "colour vs environment along V (IOR 1 is no interface)";
   row.Perturbation = "IOR x (1 + 1e-6)";
   SphereScene sc = IORScene(1.0);
@@ -358,7 +381,7 @@ Row CaseIORExactlyOne()
   return row;
 }
 
-Row CaseIORNearOne(double ior, const char* name)
+Row CaseIORNearOne(const char* name, double ior)
 {
   Row row;
   row.Case = name;
@@ -392,10 +415,20 @@ Row CaseIORNearOne(double ior, const char* name)
   return row;
 }
 
-Row CaseBubble()
+Row CaseIOROnePlusMicro(const char* name)
+{
+  return CaseIORNearOne(name, 1.0 + 1e-6);
+}
+
+Row CaseIOROneMinusMicro(const char* name)
+{
+  return CaseIORNearOne(name, 1.0 - 1e-6);
+}
+
+Row CaseBubble(const char* name)
 {
   Row row;
-  row.Case = "ior_below_1_bubble";
+  row.Case = name;
   row.Measure = "T2 angle vs closed form, impact < 0.9 R_crit or TIR (deg)";
   row.Perturbation = "IOR x (1 + 1e-6)";
   SphereScene sc = IORScene(0.75);
@@ -445,10 +478,10 @@ Row CaseBubble()
   return row;
 }
 
-Row CaseIORThousand()
+Row CaseIORThousand(const char* name)
 {
   Row row;
-  row.Case = "ior_1000";
+  row.Case = name;
   row.Measure = "colour vs closed form (Fresnel mix), impact < 0.9 R";
   row.Perturbation = "IOR x (1 + 1e-6)";
   SphereScene sc = IORScene(1000.0);
@@ -543,29 +576,6 @@ struct BoxScene
   double IOR = 1.5;
 };
 
-vtkSmartPointer<vtkActor> BoxActor(const BoxScene& sc)
-{
-  vtkNew<vtkCubeSource> cube;
-  cube->SetXLength(sc.Length[0]);
-  cube->SetYLength(sc.Length[1]);
-  cube->SetZLength(sc.Length[2]);
-  cube->Update();
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->DeepCopy(cube->GetOutput());
-  auto actor = ActorFor(poly);
-  vtkNew<vtkMatrix4x4> m;
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      m->SetElement(r, k, sc.Axis[k][r]);
-    }
-    m->SetElement(r, 3, sc.Centre[r]);
-  }
-  actor->SetUserMatrix(m);
-  return actor;
-}
-
 Box ViewBox(Rig& rig, const BoxScene& sc)
 {
   Box b;
@@ -578,43 +588,29 @@ Box ViewBox(Rig& rig, const BoxScene& sc)
   return b;
 }
 
-struct BoxRun
+Run RunBox(const BoxScene& sc)
 {
-  std::unique_ptr<Rig> R;
-  vtkSmartPointer<vtkActor> Actor;
-  Frame Base;      // the built-in environment
-  Frame Smooth;    // the smooth environment (continuity pair, unperturbed)
-  Frame Perturbed; // the smooth environment, input perturbed
-};
-
-BoxRun RunBox(const BoxScene& sc)
-{
-  BoxRun run;
-  run.R.reset(new Rig(sc.Width, sc.Height));
-  run.Actor = BoxActor(sc);
-  vtkRefractionPass::MakeGlass(run.Actor, sc.IOR);
-  run.R->Renderer->AddActor(run.Actor);
-  run.R->LookAt(sc.Eye, sc.Focal, sc.Up, sc.ViewAngle, sc.Near, sc.Far);
-  run.Base = run.R->Render();
-  run.R->UseSmoothEnvironment(true);
-  run.Smooth = run.R->Render();
-  // The user matrix places the box; scale its local frame by 1 + 1e-6 about the centre.
-  vtkNew<vtkMatrix4x4> m;
-  m->DeepCopy(run.Actor->GetUserMatrix());
+  Scene scene;
+  scene.Poly = rftest::BoxPoly(sc.Length);
+  scene.Placement = vtkSmartPointer<vtkMatrix4x4>::New();
   for (int r = 0; r < 3; ++r)
   {
     for (int k = 0; k < 3; ++k)
     {
-      m->SetElement(r, k, m->GetElement(r, k) * (1.0 + kPerturbation));
+      scene.Placement->SetElement(r, k, sc.Axis[k][r]);
     }
+    scene.Placement->SetElement(r, 3, sc.Centre[r]);
   }
-  vtkNew<vtkMatrix4x4> original;
-  original->DeepCopy(run.Actor->GetUserMatrix());
-  run.Actor->SetUserMatrix(m);
-  run.Perturbed = run.R->Render();
-  run.Actor->SetUserMatrix(original);
-  run.R->UseSmoothEnvironment(false);
-  return run;
+  scene.IOR = sc.IOR;
+  std::copy(sc.Eye, sc.Eye + 3, scene.Eye);
+  std::copy(sc.Focal, sc.Focal + 3, scene.Focal);
+  std::copy(sc.Up, sc.Up + 3, scene.Up);
+  scene.ViewAngle = sc.ViewAngle;
+  scene.Near = sc.Near;
+  scene.Far = sc.Far;
+  scene.Width = sc.Width;
+  scene.Height = sc.Height;
+  return RunScene(scene);
 }
 
 struct BoxMeasure
@@ -674,10 +670,10 @@ BoxMeasure MeasureBox(Rig& rig, const Frame& f, const BoxScene& sc,
   return m;
 }
 
-Row CaseFlatSlab()
+Row CaseFlatSlab(const char* name)
 {
   Row row;
-  row.Case = "flat_slab_zmin_eq_zmax";
+  row.Case = name;
   row.Measure = "T2 angle vs closed form (slab: T2 = V), interior (deg)";
   row.Perturbation = "geometry x (1 + 1e-6)";
   BoxScene sc;
@@ -697,10 +693,10 @@ Row CaseFlatSlab()
   return row;
 }
 
-Row CaseGrazing()
+Row CaseGrazing(const char* name)
 {
   Row row;
-  row.Case = "grazing_view";
+  row.Case = name;
   row.Measure = "T2 angle vs closed form, abs(N.V) < 0.1, interior (deg)";
   row.Perturbation = "geometry x (1 + 1e-6)";
   // A long slab seen almost edge-on: its top face is met at 84-89.6 degrees of incidence.
@@ -740,10 +736,10 @@ Row CaseGrazing()
   return row;
 }
 
-Row CaseT1ParallelToImage()
+Row CaseT1ParallelToImage(const char* name)
 {
   Row row;
-  row.Case = "t1z_parallel_image_plane";
+  row.Case = name;
   row.Measure = "T2 angle vs closed form, abs(T1.z) < 0.05, interior (deg)";
   row.Perturbation = "geometry x (1 + 1e-6)";
   // A slab far off-axis (156 degree view angle) whose front face refracts the central ray to
@@ -831,15 +827,15 @@ Row SphereRow(const char* name, const SphereScene& sc, double bound, double mean
 constexpr double kSphereMax = 1.5;
 constexpr double kSphereMean = 1.0;
 
-Row CaseFarNear()
+Row CaseFarNear(const char* name)
 {
   SphereScene sc;
   sc.Near = 5e-3;
   sc.Far = 5e3;
-  return SphereRow("far_near_1e6", sc, kSphereMax, kSphereMean);
+  return SphereRow(name, sc, kSphereMax, kSphereMean);
 }
 
-Row CaseOffset()
+Row CaseOffset(const char* name)
 {
   SphereScene sc;
   sc.Centre[0] = 1e7;
@@ -849,15 +845,15 @@ Row CaseOffset()
   sc.Eye[1] = sc.Centre[1];
   sc.Eye[2] = sc.Centre[2] + 4.0;
   sc.DoublePoints = true; // float points cannot hold a unit sphere at 1e7
-  return SphereRow("offset_1e7", sc, kSphereMax, kSphereMean);
+  return SphereRow(name, sc, kSphereMax, kSphereMean);
 }
 
-Row CaseNonPowerOfTwo()
+Row CaseNonPowerOfTwo(const char* name)
 {
   SphereScene sc;
   sc.Width = 97;
   sc.Height = 61;
-  return SphereRow("window_97x61", sc, kSphereMax, kSphereMean);
+  return SphereRow(name, sc, kSphereMax, kSphereMean);
 }
 
 
@@ -871,18 +867,15 @@ Row OneTexelCase(const char* name, const char* measure, const SphereScene& sc)
   row.Case = name;
   row.Measure = measure;
   row.Perturbation = "geometry x (1 + 1e-6)";
-  std::unique_ptr<Rig> rig(new Rig(sc.Width, sc.Height));
-  auto actor = ActorFor(SpherePoly(sc.Centre, sc.Radius, sc.Resolution, false));
-  vtkRefractionPass::MakeGlass(actor, sc.IOR);
-  rig->Renderer->AddActor(actor);
   // Look along -z at the origin, not at the sphere, so the pixel's ray passes off-centre.
-  const double focal[3] = { 0.0, 0.0, 0.0 };
-  rig->LookAt(sc.Eye, focal, sc.Up, sc.ViewAngle, sc.Near, sc.Far);
-  const Frame base = rig->Render();
-  rig->UseSmoothEnvironment(true);
-  const Frame smooth = rig->Render();
-  PerturbGeometry(actor, sc.Centre);
-  const Frame perturbed = rig->Render();
+  SphereScene offCentre = sc;
+  offCentre.FocalAtCentre = false;
+  std::fill(offCentre.Focal, offCentre.Focal + 3, 0.0);
+  const Run run = RunSphere(offCentre, false);
+  Rig* rig = run.R.get();
+  const Frame& base = run.Base;
+  const Frame& smooth = run.Smooth;
+  const Frame& perturbed = run.Perturbed;
   const rf_vec3 c = rig->ToView(sc.Centre);
   const auto rays = rig->PixelRays(base.W, base.H);
   int covered = 0;
@@ -927,7 +920,7 @@ Row OneTexelCase(const char* name, const char* measure, const SphereScene& sc)
   return row;
 }
 
-Row CaseSinglePixelObject()
+Row CaseSinglePixelObject(const char* name)
 {
   // A sphere of radius 0.6 px whose centre is 0.25 px off the centre of pixel (32, 32).
   SphereScene sc;
@@ -937,11 +930,10 @@ Row CaseSinglePixelObject()
   sc.Radius = 0.6 * pixel;
   sc.Centre[0] = 0.5 * pixel + 0.25 * pixel;
   sc.Centre[1] = 0.5 * pixel;
-  return OneTexelCase(
-    "single_pixel_object", "T2 angle vs closed form, the covered pixel (deg)", sc);
+  return OneTexelCase(name, "T2 angle vs closed form, the covered pixel (deg)", sc);
 }
 
-Row CaseOnePixelWindow()
+Row CaseOnePixelWindow(const char* name)
 {
   // A 1x1 window whose one ray passes the sphere at 0.4 R (one back texel, one reduction
   // level).
@@ -949,13 +941,13 @@ Row CaseOnePixelWindow()
   sc.Width = 1;
   sc.Height = 1;
   sc.Centre[0] = 0.4;
-  return OneTexelCase("window_1x1", "T2 angle vs closed form, the pixel (deg)", sc);
+  return OneTexelCase(name, "T2 angle vs closed form, the pixel (deg)", sc);
 }
 
-Row CaseNearPlane()
+Row CaseNearPlane(const char* name)
 {
   Row row;
-  row.Case = "near_plane_crossing";
+  row.Case = name;
   row.Measure = "T2 angle vs closed form, unclipped entry, impact < 0.9 R (deg)";
   row.Perturbation = "geometry x (1 + 1e-6)";
   // The near plane (distance 1.6) cuts the front cap of a sphere off the view axis (its
@@ -991,7 +983,7 @@ Row CaseNearPlane()
   return row;
 }
 
-Row CaseDegenerate()
+Row CaseDegenerate(const char* name)
 {
   // A sphere with a band of zero-length normals (whole triangles with only zero normals) and
   // extra zero-area triangles: repeated vertices and collinear ones.
@@ -1052,32 +1044,25 @@ Row CaseDegenerate()
   sc.Resolution = 96;
   // Where the normals are zero the face normal stands in: the facets of a 96-gon (3.75 deg)
   // bend T2 by up to about twice the smooth sphere's error in that band.
-  return SphereRow("degenerate_triangles_zero_normals", sc, 3.0, kSphereMean,
+  return SphereRow(name, sc, 3.0, kSphereMean,
     "T2 angle vs closed form, impact < 0.9 R (deg)");
 }
 
-Row CaseOpenMesh()
+Row CaseOpenMesh(const char* name)
 {
   Row row;
-  row.Case = "open_mesh";
+  row.Case = name;
   row.Measure = "T2 angle vs V (a single open sheet), inside silhouette (deg)";
   row.Perturbation = "geometry x (1 + 1e-6)";
   // The upper half of a sphere, open at its equator, seen from above: every ray crosses one
   // surface, the back capture holds that same surface, and the pass must act as a thin sheet.
-  const double centre[3] = { 0.0, 0.0, 0.0 };
-  auto poly = SpherePoly(centre, 1.0, 96, false, 90.0);
-  std::unique_ptr<Rig> rig(new Rig(96, 96));
-  auto actor = ActorFor(poly);
-  vtkRefractionPass::MakeGlass(actor, 1.5);
-  rig->Renderer->AddActor(actor);
-  const double eye[3] = { 0.0, 0.0, 4.0 };
-  const double up[3] = { 0.0, 1.0, 0.0 };
-  rig->LookAt(eye, centre, up, 40.0, 1.0, 10.0);
-  const Frame base = rig->Render();
-  rig->UseSmoothEnvironment(true);
-  const Frame smooth = rig->Render();
-  PerturbGeometry(actor, centre);
-  const Frame perturbed = rig->Render();
+  SphereScene sc;
+  sc.Poly = rftest::SpherePoly(sc.Centre, sc.Radius, sc.Resolution, false, 90.0);
+  const Run run = RunSphere(sc, false);
+  Rig* rig = run.R.get();
+  const Frame& base = run.Base;
+  const Frame& smooth = run.Smooth;
+  const Frame& perturbed = run.Perturbed;
   const auto rays = rig->PixelRays(base.W, base.H);
   double worst = 0.0;
   int count = 0;
@@ -1121,10 +1106,10 @@ int Regions(vtkPolyData* poly)
   return connectivity->GetNumberOfExtractedRegions();
 }
 
-Row CaseTopologyChange()
+Row CaseTopologyChange(const char* name)
 {
   Row row;
-  row.Case = "topology_change";
+  row.Case = name;
   row.Measure = "T2 angle vs a fresh pass on the new mesh (deg)";
   row.Perturbation = "geometry x (1 + 1e-6)";
   // Metaballs contoured at two times with different numbers of blobs: the same actor gets the
@@ -1141,32 +1126,21 @@ Row CaseTopologyChange()
   std::printf("topology_change: %lld points in %d blob(s), then %lld points in %d blob(s)\n",
     static_cast<long long>(before->GetNumberOfPoints()), regionsBefore,
     static_cast<long long>(after->GetNumberOfPoints()), regionsAfter);
-  const double centre[3] = { 0.0, 0.0, 0.0 };
-  const double eye[3] = { 0.0, 0.0, 3.5 };
-  const double up[3] = { 0.0, 1.0, 0.0 };
-  std::unique_ptr<Rig> rig(new Rig(96, 96));
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->ScalarVisibilityOff();
-  mapper->SetInputData(before);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  vtkRefractionPass::MakeGlass(actor, 1.5);
-  rig->Renderer->AddActor(actor);
-  rig->LookAt(eye, centre, up, 40.0, 1.0, 10.0);
-  const Frame first = rig->Render();
-  mapper->SetInputData(after);
-  const Frame second = rig->Render();
-  rig->UseSmoothEnvironment(true);
-  const Frame smooth = rig->Render();
-  PerturbGeometry(actor, centre);
-  const Frame perturbed = rig->Render();
+  Scene scene;
+  scene.Poly = before;
+  scene.Eye[2] = 3.5;
+  // The first frame shows the old mesh; then the same actor's mapper gets the new one.
+  Frame first;
+  const Run run = RunScene(scene, [&first, &after](Run& r) {
+    first = r.R->Render();
+    vtkPolyDataMapper::SafeDownCast(r.Actor->GetMapper())->SetInputData(after);
+  });
+  const Frame& second = run.Base;
+  const Frame& smooth = run.Smooth;
+  const Frame& perturbed = run.Perturbed;
 
-  std::unique_ptr<Rig> fresh(new Rig(96, 96));
-  auto freshActor = ActorFor(after);
-  vtkRefractionPass::MakeGlass(freshActor, 1.5);
-  fresh->Renderer->AddActor(freshActor);
-  fresh->LookAt(eye, centre, up, 40.0, 1.0, 10.0);
-  const Frame reference = fresh->Render();
+  scene.Poly = after;
+  const Frame reference = RunScene(scene).Base;
   const Change ch = Compare(second, reference);
   std::printf("topology_change: against a fresh pass: T2 max %.3g deg, colour max %.3g, %d "
               "pixels differ in flag\n",
@@ -1184,26 +1158,20 @@ Row CaseTopologyChange()
 }
 
 //------------------------------------------------------------------------------
-const std::vector<std::pair<std::string, std::function<Row()>>>& Cases()
+// The table of cases (rfStabilityCases.def, which CMake reads too: a case listed there is a
+// test named stability.<name>).
+struct Case
 {
-  static const std::vector<std::pair<std::string, std::function<Row()>>> cases = {
-    { "ior_exactly_1", CaseIORExactlyOne },
-    { "ior_1_plus_1e-6", [] { return CaseIORNearOne(1.0 + 1e-6, "ior_1_plus_1e-6"); } },
-    { "ior_1_minus_1e-6", [] { return CaseIORNearOne(1.0 - 1e-6, "ior_1_minus_1e-6"); } },
-    { "ior_below_1_bubble", CaseBubble },
-    { "ior_1000", CaseIORThousand },
-    { "grazing_view", CaseGrazing },
-    { "t1z_parallel_image_plane", CaseT1ParallelToImage },
-    { "flat_slab_zmin_eq_zmax", CaseFlatSlab },
-    { "single_pixel_object", CaseSinglePixelObject },
-    { "near_plane_crossing", CaseNearPlane },
-    { "far_near_1e6", CaseFarNear },
-    { "offset_1e7", CaseOffset },
-    { "degenerate_triangles_zero_normals", CaseDegenerate },
-    { "open_mesh", CaseOpenMesh },
-    { "topology_change", CaseTopologyChange },
-    { "window_1x1", CaseOnePixelWindow },
-    { "window_97x61", CaseNonPowerOfTwo },
+  const char* Name;
+  Row (*Function)(const char* name);
+};
+
+const std::vector<Case>& Cases()
+{
+  static const std::vector<Case> cases = {
+#define RF_STABILITY_CASE(name, function) { name, function },
+#include "rfStabilityCases.def"
+#undef RF_STABILITY_CASE
   };
   return cases;
 }
@@ -1231,32 +1199,85 @@ std::string TableLine(const Row& r)
   return s.str();
 }
 
-// Rows are stored one field per line so measures may contain any character but a newline.
-void WriteRow(const Row& r, const std::string& dir)
+// A case's row: its table line, written when the case has run (pass or FAIL).
+bool WriteRow(const Row& r, const std::string& dir)
 {
-  vtksys::SystemTools::MakeDirectory(dir);
   std::ofstream out(dir + "/" + r.Case + ".row");
   out << TableLine(r) << "\n";
+  out.close();
+  if (!out)
+  {
+    std::fprintf(stderr, "cannot write the row of %s into %s\n", r.Case.c_str(), dir.c_str());
+    return false;
+  }
+  return true;
 }
 
+// The fixture's set-up: an empty row folder, so that the table sees only this run's rows.
+int Clean(const std::string& dir)
+{
+  if (vtksys::SystemTools::FileExists(dir))
+  {
+    const vtksys::Status removed = vtksys::SystemTools::RemoveADirectory(dir);
+    if (!removed)
+    {
+      std::fprintf(stderr, "cannot remove the old rows in %s: %s\n", dir.c_str(),
+        removed.GetString().c_str());
+      return EXIT_FAILURE;
+    }
+  }
+  const vtksys::Status made = vtksys::SystemTools::MakeDirectory(dir);
+  vtksys::Directory folder;
+  if (!made || !folder.Load(dir) || folder.GetNumberOfFiles() != 2) // "." and ".."
+  {
+    std::fprintf(stderr, "cannot make an empty row folder %s: %s\n", dir.c_str(),
+      made ? "it is not empty" : made.GetString().c_str());
+    return EXIT_FAILURE;
+  }
+  std::printf("row folder %s is empty\n", dir.c_str());
+  return EXIT_SUCCESS;
+}
+
+// The table of this run: one row per case of the table of cases. It fails when a case has
+// no row (not run, or stopped before writing it: a crash or a time-out), when a row is
+// FAIL, or when the folder holds a row of no known case.
 int Table(const std::string& dir, const std::string& markdown)
 {
   std::ostringstream table;
   table << kHeader << "\n" << kRule << "\n";
-  int missing = 0;
-  int failed = 0;
+  std::vector<std::string> missing;
+  std::vector<std::string> failed;
+  std::set<std::string> known;
   for (const auto& c : Cases())
   {
-    std::ifstream in(dir + "/" + c.first + ".row");
+    known.insert(std::string(c.Name) + ".row");
+    std::ifstream in(dir + "/" + c.Name + ".row");
     std::string line;
     if (!in || !std::getline(in, line))
     {
-      table << "| " << c.first << " | (not run) | | | | | | | | | | | |\n";
-      ++missing;
+      table << "| " << c.Name << " | (not run) | | | | | | | | | | | |\n";
+      missing.push_back(c.Name);
       continue;
     }
-    failed += line.find("| FAIL |") != std::string::npos ? 1 : 0;
+    const std::string passed = "| pass |";
+    if (line.size() < passed.size() || line.compare(line.size() - passed.size(), passed.size(), passed) != 0)
+    {
+      failed.push_back(c.Name);
+    }
     table << line << "\n";
+  }
+  std::vector<std::string> unknown;
+  vtksys::Directory folder;
+  if (folder.Load(dir))
+  {
+    for (unsigned long i = 0; i < folder.GetNumberOfFiles(); ++i)
+    {
+      const std::string file = folder.GetFile(i);
+      if (file != "." && file != ".." && !known.count(file))
+      {
+        unknown.push_back(file);
+      }
+    }
   }
   std::printf("Stability table (%s):\n%s", markdown.c_str(), table.str().c_str());
   std::ofstream out(markdown);
@@ -1265,8 +1286,39 @@ int Table(const std::string& dir, const std::string& markdown)
          "forms; dT2 and dColour are the largest changes under a relative perturbation of 1e-6 "
          "of the input, over pixels whose flag did not change.\n\n"
       << table.str();
-  std::printf("%d case(s) failed, %d not run\n", failed, missing);
-  return EXIT_SUCCESS; // the cases fail on their own; the table only reports
+  out.close();
+  auto list = [](const std::vector<std::string>& names) {
+    std::string joined;
+    for (const auto& n : names)
+    {
+      joined += (joined.empty() ? "" : ", ") + n;
+    }
+    return joined;
+  };
+  std::printf("%zu case(s): %zu failed, %zu without a row\n", Cases().size(), failed.size(),
+    missing.size());
+  bool ok = true;
+  if (!missing.empty())
+  {
+    std::printf("FAILED: no row (not run, or stopped before its end): %s\n", list(missing).c_str());
+    ok = false;
+  }
+  if (!failed.empty())
+  {
+    std::printf("FAILED: case(s) failed: %s\n", list(failed).c_str());
+    ok = false;
+  }
+  if (!unknown.empty())
+  {
+    std::printf("FAILED: rows of no known case in %s: %s\n", dir.c_str(), list(unknown).c_str());
+    ok = false;
+  }
+  if (!out)
+  {
+    std::printf("FAILED: cannot write %s\n", markdown.c_str());
+    ok = false;
+  }
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 }
 
@@ -1274,9 +1326,7 @@ int main(int argc, char* argv[])
 {
   if (argc >= 3 && std::strcmp(argv[1], "--clean") == 0)
   {
-    vtksys::SystemTools::RemoveADirectory(argv[2]);
-    vtksys::SystemTools::MakeDirectory(argv[2]);
-    return EXIT_SUCCESS;
+    return Clean(argv[2]);
   }
   if (argc >= 4 && std::strcmp(argv[1], "--table") == 0)
   {
@@ -1291,11 +1341,11 @@ int main(int argc, char* argv[])
   MessageLog* log = InstallLog();
   for (const auto& c : Cases())
   {
-    if (c.first != argv[1])
+    if (c.Name != std::string(argv[1]))
     {
       continue;
     }
-    Row row = c.second();
+    Row row = c.Function(c.Name);
     row.Judge();
     const int errors = log->Count("error");
     row.Require(errors == 0, "VTK reported errors");
@@ -1304,9 +1354,9 @@ int main(int argc, char* argv[])
     {
       std::printf("FAILED %s: %s\n", row.Case.c_str(), f.c_str());
     }
-    if (argc >= 3)
+    if (argc >= 3 && !WriteRow(row, argv[2]))
     {
-      WriteRow(row, argv[2]);
+      return EXIT_FAILURE;
     }
     return row.Passed() ? EXIT_SUCCESS : EXIT_FAILURE;
   }

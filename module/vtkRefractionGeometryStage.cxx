@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 vtkStandardNewMacro(vtkRefractionGeometryStage);
 
@@ -377,17 +378,37 @@ const vtkRefractionGeometryStage::Surface& vtkRefractionGeometryStage::GetSurfac
     0.5 * (bounds[4] + bounds[5]) };
   double volume = 0.0;
   // Closed and consistently oriented: every directed edge a->b has its partner b->a, so a sum
-  // of an antisymmetric function of the edges' ends vanishes. With pseudo-random 64-bit
-  // values per point, wrapping arithmetic, a boundary edge leaves it non-zero (but for a
-  // chance of 2^-64); a mesh wound inconsistently counts as open. One pass, no edge table:
-  // re-contoured data is checked every time step.
-  auto hash = [](vtkIdType id, std::uint64_t salt) {
-    std::uint64_t x = static_cast<std::uint64_t>(id) * 0x9E3779B97F4A7C15ULL + salt;
-    x ^= x >> 31;
-    x *= 0xBF58476D1CE4E5B9ULL;
-    x ^= x >> 29;
-    return x;
-  };
+  // of an antisymmetric function of the edges' ends vanishes. The ends are keyed by their
+  // position (quantized to 2^-20 of the bounds), not their ids, so that the duplicated points
+  // of a seam (a parametric torus, a sphere's poles) pair up as the surface does. Pseudo-random
+  // 64-bit values per key and wrapping arithmetic: a boundary edge leaves the sum non-zero
+  // (but for a chance of 2^-64); a mesh wound inconsistently counts as open. One pass, no edge
+  // table: re-contoured data is checked every time step.
+  const double extent = std::max(
+    { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-300 });
+  const vtkIdType numberOfPoints = poly->GetNumberOfPoints();
+  std::vector<std::uint64_t> keys[2];
+  keys[0].resize(numberOfPoints);
+  keys[1].resize(numberOfPoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    double p[3];
+    poly->GetPoint(i, p);
+    std::uint64_t key = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double unit = std::min(std::max((p[k] - bounds[2 * k]) / extent, 0.0), 1.0);
+      key = (key << 21) | static_cast<std::uint64_t>(std::llround(unit * 1048576.0));
+    }
+    for (int salt = 0; salt < 2; ++salt)
+    {
+      std::uint64_t x = key * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(salt + 1);
+      x ^= x >> 31;
+      x *= 0xBF58476D1CE4E5B9ULL;
+      x ^= x >> 29;
+      keys[salt][i] = x;
+    }
+  }
   std::uint64_t edgeSum = 0;
   vtkCellArray* polys = poly->GetPolys();
   vtkIdType count = 0;
@@ -401,7 +422,7 @@ const vtkRefractionGeometryStage::Surface& vtkRefractionGeometryStage::GetSurfac
     {
       const vtkIdType from = ids[j];
       const vtkIdType to = ids[(j + 1) % count];
-      edgeSum += hash(from, 1) * hash(to, 2) - hash(to, 1) * hash(from, 2);
+      edgeSum += keys[0][from] * keys[1][to] - keys[0][to] * keys[1][from];
     }
     if (count < 3)
     {

@@ -199,10 +199,12 @@ public:
    * What the glass shows where its rays leave toward the surroundings. Always the renderer's
    * environment texture when it is a cube map (a lat-long image through
    * vtkEquirectangularToCubeMapTexture, vtkRefractionImageIO::ReadEnvironment), honouring
-   * EnvironmentUp and EnvironmentRight. Without one: ENVIRONMENT_RENDERER (default) the
-   * renderer's background, solid or gradient (the colour the screen shows in that direction),
-   * so glass of IOR 1 is invisible; ENVIRONMENT_BUILTIN the built-in sky and checkered ground
-   * (rf_builtin_environment), a named option for tests, benchmarks and demos.
+   * EnvironmentUp and EnvironmentRight. Without one: ENVIRONMENT_RENDERER the renderer's
+   * background, solid or gradient (the colour the screen shows in that direction), so glass
+   * of IOR 1 is invisible; ENVIRONMENT_BUILTIN (default for now) the built-in sky and
+   * checkered ground (rf_builtin_environment). The built-in default stays until the glass
+   * takes colour from the data: over a solid background with nothing behind it, glass of any
+   * index would show only the background colour, that is nothing.
    */
   enum EnvironmentType
   {

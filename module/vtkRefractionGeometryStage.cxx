@@ -62,7 +62,8 @@ void vtkRefractionGeometryStage::Render(const vtkRenderState*)
 
 //------------------------------------------------------------------------------
 void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
-  bool normalDistance, bool backNearest, vtkMatrix4x4* inverseProjection, bool parallel)
+  bool normalDistance, bool dataColour, bool backNearest, vtkMatrix4x4* inverseProjection,
+  bool parallel)
 {
   this->Glass = glass;
   this->MaterialIndex.clear();
@@ -71,13 +72,19 @@ void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
     this->MaterialIndex[glass[i]] = static_cast<int>(i);
   }
   this->NormalDistance = normalDistance;
+  this->DataColour = dataColour;
   this->BackNearest = backNearest;
   this->InverseProjection->DeepCopy(inverseProjection);
   this->Parallel = parallel;
   std::ostringstream defines;
+  // The front stage's outputs, in the order DrawFront attaches the targets.
+  if (dataColour)
+  {
+    defines << "#define RF_GBUFFER_COLOUR 1\n";
+  }
   if (normalDistance)
   {
-    defines << "#define RF_GBUFFER_NORMAL_DISTANCE\n";
+    defines << "#define RF_GBUFFER_NORMAL_DISTANCE " << (dataColour ? 2 : 1) << "\n";
   }
   if (backNearest)
   {
@@ -132,25 +139,23 @@ void vtkRefractionGeometryStage::DrawProps(vtkOpenGLRenderer* ren, int stage)
 
 //------------------------------------------------------------------------------
 void vtkRefractionGeometryStage::DrawIntoTargets(vtkOpenGLRenderer* ren,
-  vtkRefractionTargets* targets, int colour0, int colour1, int depth, double clearDepth,
+  vtkRefractionTargets* targets, const std::vector<int>& colours, int depth, double clearDepth,
   unsigned int depthFunc, int stage)
 {
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   vtkOpenGLState* ostate = renWin->GetState();
   vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
-  vtkTextureObject* first = targets->Get(colour0);
-  vtkTextureObject* second = colour1 >= 0 ? targets->Get(colour1) : nullptr;
+  vtkTextureObject* first = targets->Get(colours.front());
   this->Width = static_cast<int>(first->GetWidth());
   this->Height = static_cast<int>(first->GetHeight());
   this->Origin[0] = 0;
   this->Origin[1] = 0;
   fbo->SaveCurrentBindingsAndBuffers();
   fbo->Bind();
-  fbo->AddColorAttachment(0, first);
-  const int buffers = second ? 2 : 1;
-  if (second)
+  const int buffers = static_cast<int>(colours.size());
+  for (int i = 0; i < buffers; ++i)
   {
-    fbo->AddColorAttachment(1, second);
+    fbo->AddColorAttachment(static_cast<unsigned int>(i), targets->Get(colours[i]));
   }
   fbo->AddDepthAttachment(targets->Get(depth));
   fbo->ActivateDrawBuffers(buffers);
@@ -178,9 +183,9 @@ void vtkRefractionGeometryStage::DrawIntoTargets(vtkOpenGLRenderer* ren,
     this->DrawProps(ren, stage);
   }
   this->ActiveDrawBuffers = 0;
-  if (second)
+  for (int i = buffers - 1; i > 0; --i)
   {
-    fbo->RemoveColorAttachment(1);
+    fbo->RemoveColorAttachment(static_cast<unsigned int>(i));
   }
   fbo->UnBind();
   fbo->RestorePreviousBindingsAndBuffers();
@@ -189,15 +194,23 @@ void vtkRefractionGeometryStage::DrawIntoTargets(vtkOpenGLRenderer* ren,
 //------------------------------------------------------------------------------
 void vtkRefractionGeometryStage::DrawFront(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets)
 {
-  this->DrawIntoTargets(ren, targets, vtkRefractionTargets::FRONT_SURFACE,
-    this->NormalDistance ? vtkRefractionTargets::FRONT_AUX : -1, vtkRefractionTargets::FRONT_DEPTH,
-    1.0, GL_LESS, STAGE_FRONT);
+  std::vector<int> colours{ vtkRefractionTargets::FRONT_SURFACE };
+  if (this->DataColour)
+  {
+    colours.push_back(vtkRefractionTargets::FRONT_COLOR);
+  }
+  if (this->NormalDistance)
+  {
+    colours.push_back(vtkRefractionTargets::FRONT_AUX);
+  }
+  this->DrawIntoTargets(
+    ren, targets, colours, vtkRefractionTargets::FRONT_DEPTH, 1.0, GL_LESS, STAGE_FRONT);
 }
 
 //------------------------------------------------------------------------------
 void vtkRefractionGeometryStage::DrawBack(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets)
 {
-  this->DrawIntoTargets(ren, targets, vtkRefractionTargets::BACK_SURFACE, -1,
+  this->DrawIntoTargets(ren, targets, { vtkRefractionTargets::BACK_SURFACE },
     vtkRefractionTargets::BACK_Z, this->BackNearest ? 1.0 : 0.0,
     this->BackNearest ? GL_LESS : GL_GREATER, STAGE_BACK);
 }
@@ -237,8 +250,10 @@ bool vtkRefractionGeometryStage::PreReplaceShaderValues(std::string& vertexShade
   }
   // VTK's lighting would be computed per fragment and thrown away: the geometry stage writes
   // every output itself. The tags stay for the mapper; ours follow them.
+  // What VTK's colour code leaves (the actor's colour or the scalars through the lookup table,
+  // and a colour texture applied after it) stays in gl_FragData[0] for the G-buffer to keep.
   vtkShaderProgram::Substitute(
-    fragmentShader, "//VTK::Light::Impl", "gl_FragData[0] = vec4(1.0);\n", false);
+    fragmentShader, "//VTK::Light::Impl", "gl_FragData[0] = RF_DATA_COLOUR;\n", false);
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
     std::string("//VTK::Output::Dec\n") + kDecTag + "\n", false);
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::Coincident::Impl",
@@ -273,7 +288,11 @@ bool vtkRefractionGeometryStage::PostReplaceShaderValues(std::string&, std::stri
   const bool haveVertexVC = fragmentShader.find("vec4 vertexVC") != std::string::npos;
   const bool haveNormal = fragmentShader.find("normalVCVSOutput") != std::string::npos;
   std::ostringstream defines;
-  defines << this->Defines << "#define RF_POSITION_VC "
+  defines << this->Defines << "#define RF_DATA_COLOUR "
+          << (fragmentShader.find("vec3 diffuseColor") != std::string::npos
+                 ? "vec4(diffuseColor, opacity)"
+                 : "vec4(1.0)")
+          << "\n#define RF_POSITION_VC "
           << (haveVertexVC ? "vertexVC.xyz" : "rfReconstructPositionVC()") << "\n"
           << "#define RF_NORMAL_VC " << (haveNormal ? "normalVCVSOutput" : "vec3(0.0)") << "\n";
   if (fragmentShader.find(kDecTag) == std::string::npos ||

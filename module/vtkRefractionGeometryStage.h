@@ -48,10 +48,11 @@ public:
    * whether the G-buffer carries ISR's d_N, whether the back capture keeps the nearest
    * back-facing surface, the camera's inverse projection (GL layout) and projection type.
    */
-  void Configure(const std::vector<vtkProp*>& glass, bool normalDistance, bool backNearest,
-    vtkMatrix4x4* inverseProjection, bool parallel);
+  void Configure(const std::vector<vtkProp*>& glass, bool normalDistance, bool dataColour,
+    bool backNearest, vtkMatrix4x4* inverseProjection, bool parallel);
 
-  /// The front G-buffer (FRONT_SURFACE, FRONT_AUX when configured, FRONT_DEPTH).
+  /// The front G-buffer (FRONT_SURFACE, FRONT_COLOR and FRONT_AUX when configured,
+  /// FRONT_DEPTH).
   void DrawFront(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets);
   /// The back capture (BACK_SURFACE, BACK_Z).
   void DrawBack(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets);
@@ -78,8 +79,9 @@ private:
   vtkRefractionGeometryStage(const vtkRefractionGeometryStage&) = delete;
   void operator=(const vtkRefractionGeometryStage&) = delete;
 
-  void DrawIntoTargets(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int colour0,
-    int colour1, int depth, double clearDepth, unsigned int depthFunc, int stage);
+  void DrawIntoTargets(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets,
+    const std::vector<int>& colours, int depth, double clearDepth, unsigned int depthFunc,
+    int stage);
   void DrawProps(vtkOpenGLRenderer* ren, int stage);
   /// Orientation of a prop's polygons: +1 counter-clockwise seen from outside (the OpenGL
   /// front face), -1 inward; `closed` when every edge has a partner of opposite direction.
@@ -99,6 +101,7 @@ private:
   vtkOpenGLState* State = nullptr;
   std::vector<vtkWeakPointer<vtkMapper>> NormalDistanceMappers;
   bool NormalDistance = false;
+  bool DataColour = false;
   bool BackNearest = false;
   bool Parallel = false;
   vtkNew<vtkMatrix4x4> InverseProjection;

@@ -31,6 +31,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cmath>
 
 vtkStandardNewMacro(vtkRefractionPass);
 vtkInformationKeyMacro(vtkRefractionPass, GLASS, Integer);
@@ -367,6 +368,9 @@ void vtkRefractionPass::RenderGlass(
     wanted[vtkRefractionTargets::SCENE_COLOR] = true;
     wanted[vtkRefractionTargets::SCENE_DEPTH] = true;
   }
+  // The data's colour, for methods that shade through the glass (SSP perturbs the scene).
+  const bool dataColour = this->DataColour && method->SupportsSceneRefraction();
+  wanted[vtkRefractionTargets::FRONT_COLOR] = dataColour;
   wanted[vtkRefractionTargets::DEBUG_0] = this->DebugOutput;
   wanted[vtkRefractionTargets::DEBUG_1] = this->DebugOutput;
   this->Targets->Update(renWin, this->Width, this->Height, wanted, reduction);
@@ -390,6 +394,25 @@ void vtkRefractionPass::RenderGlass(
     ren->GetBackground(frame.Background2);
   }
   frame.SceneRefraction = sceneRefraction;
+  frame.AbsorptionDistance = 0.0;
+  if (dataColour)
+  {
+    frame.AbsorptionDistance = this->AbsorptionDistance;
+    for (vtkProp* prop : glass)
+    {
+      const double* b = prop->GetBounds();
+      if (this->AbsorptionDistance <= 0.0 && b && b[0] <= b[1])
+      {
+        const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) +
+          (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+        frame.AbsorptionDistance = std::max(frame.AbsorptionDistance, 0.5 * diagonal);
+      }
+    }
+    if (!(frame.AbsorptionDistance > 0.0))
+    {
+      frame.AbsorptionDistance = 1.0;
+    }
+  }
   frame.BoundsDepthRange = this->BoundsDepthRange;
   if (!this->ShadeStage->Prepare(ren, method, this, frame, false))
   {
@@ -407,7 +430,7 @@ void vtkRefractionPass::RenderGlass(
                     << " share one index of refraction (at most "
                     << vtkRefractionShadeStage::MaximumMaterials << " are told apart).");
   }
-  this->GeometryStage->Configure(glass, method->NeedsNormalDistance(),
+  this->GeometryStage->Configure(glass, method->NeedsNormalDistance(), dataColour,
     this->BackSurface == BACK_SURFACE_NEAREST, this->InverseProjectionGL, this->Parallel);
 
   // Stages this method does not run report no time (not the last method's).

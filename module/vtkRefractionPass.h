@@ -230,6 +230,22 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Colour from the data (on by default): the glass actor's colour, or its mapper's scalar
+   * colours through the lookup table, tints the glass by Beer-Lambert absorption: light that
+   * travels AbsorptionDistance inside the glass keeps exactly that colour, light along the
+   * measured path |P2 - P1| keeps colour^(|P2 - P1| / AbsorptionDistance), so thick parts are
+   * deeper in colour. White glass (the default actor colour) stays clear.
+   * AbsorptionDistance 0 (default): half the largest bounding-box diagonal of the glass props.
+   */
+  vtkSetMacro(DataColour, bool);
+  vtkGetMacro(DataColour, bool);
+  vtkBooleanMacro(DataColour, bool);
+  vtkSetClampMacro(AbsorptionDistance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(AbsorptionDistance, double);
+  ///@}
+
+  ///@{
   /// Blend reflection and refraction with the exact dielectric Fresnel term (on by default).
   vtkSetMacro(Fresnel, bool);
   vtkGetMacro(Fresnel, bool);
@@ -315,6 +331,8 @@ protected:
   bool GPUTiming = false;
   int EnvironmentMode = ENVIRONMENT_BUILTIN;
   bool SceneRefraction = true;
+  bool DataColour = true;
+  double AbsorptionDistance = 0.0;
   int NumberOfGlassProps = 0;
 
   vtkNew<vtkRefractionGlassChecker> GlassChecker;

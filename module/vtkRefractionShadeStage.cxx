@@ -44,6 +44,7 @@ const TargetSampler kSamplers[] = {
   { vtkRefractionTargets::FRONT_SURFACE, "rfFrontSurface" },
   { vtkRefractionTargets::FRONT_DEPTH, "rfFrontDepth" },
   { vtkRefractionTargets::FRONT_AUX, "rfFrontAux" },
+  { vtkRefractionTargets::FRONT_COLOR, "rfFrontColour" },
   { vtkRefractionTargets::BACK_SURFACE, "rfBackSurface" },
   { vtkRefractionTargets::SCENE_COLOR, "rfSceneColor" },
   { vtkRefractionTargets::SCENE_DEPTH, "rfSceneDepth" },
@@ -97,6 +98,10 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
   else if (frame.EnvironmentBackground)
   {
     defines << "#define RF_ENV_BACKGROUND\n";
+  }
+  if (frame.AbsorptionDistance > 0.0)
+  {
+    defines << "#define RF_TINT\n";
   }
   if (frame.SceneRefraction)
   {
@@ -194,6 +199,10 @@ void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* 
       static_cast<float>(frame.Background2[1]), static_cast<float>(frame.Background2[2]) };
     shader->SetUniform3f("rfBackground", bottom);
     shader->SetUniform3f("rfBackground2", top);
+  }
+  if (shader->IsUniformUsed("rfAbsorptionDistance"))
+  {
+    shader->SetUniformf("rfAbsorptionDistance", static_cast<float>(frame.AbsorptionDistance));
   }
   std::vector<float> ior(materialIOR);
   ior.resize(MaximumMaterials, ior.empty() ? 1.5f : ior.back());

@@ -50,6 +50,7 @@ public:
     vtkTexture* EnvironmentCube = nullptr;    // the renderer's cube map, or nullptr
     bool EnvironmentBackground = false;       // the renderer's background (no cube map)
     bool SceneRefraction = false;             // the captured scene is followed
+    double AbsorptionDistance = 0.0;          // > 0: the data's colour tints the glass
     double Background[3] = { 0.0, 0.0, 0.0 };
     double Background2[3] = { 0.0, 0.0, 0.0 }; // = Background when it is not a gradient
     const double* BoundsDepthRange = nullptr;

@@ -24,6 +24,7 @@ const TargetFormat kFormats[vtkRefractionTargets::TARGET_COUNT] = {
   { "front surface", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "front depth", 0, 0, 0, vtkTextureObject::Nearest },
   { "front d_N", 1, GL_R32F, GL_RED, vtkTextureObject::Nearest },
+  { "front colour", 4, GL_RGBA8, GL_RGBA, vtkTextureObject::Nearest },
   // Back normals are filtered (the paper: filtering reduces noise; empty texels are zero
   // vectors, which only shorten a filtered normal); the depth beside them in alpha is read
   // unfiltered (texelFetch). One target instead of two: the back capture writes one output.

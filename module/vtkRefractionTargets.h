@@ -33,6 +33,7 @@ public:
     FRONT_SURFACE = 0, ///< RGBA32F: octahedral view-space normal (2), -z_view, material + 1
     FRONT_DEPTH,       ///< DEPTH32F: the glass's nearest surface, written to the screen's depth
     FRONT_AUX,         ///< R32F: ISR's d_N at the front surface (view-space units; < 0: none)
+    FRONT_COLOR,       ///< RGBA8: the data's colour at the front surface (actor or scalars)
     BACK_SURFACE,      ///< RGBA32F, filtered: outward view-space normal of the back surface
                        ///< and its -z_view in alpha, 0 where there is none
     BACK_Z,            ///< DEPTH32F: the depth test of the back capture

@@ -6,7 +6,9 @@
 // in the shading stage (rfShadeFS.glsl). One program serves the three stages (rfGeometryStage
 // selects), so switching stages costs no shader rebuild.
 //  1 front: octahedral view-space normal facing the viewer, -z_view, material index + 1 (a
-//    cleared texel, 0, is no glass); with RF_GBUFFER_NORMAL_DISTANCE, ISR's d_N in target 1.
+//    cleared texel, 0, is no glass); with RF_GBUFFER_COLOUR (output 1) the data's
+//    colour VTK computed (the actor's, or the scalars through the lookup table), with
+//    RF_GBUFFER_NORMAL_DISTANCE (its output index) ISR's d_N.
 //  2 back: DIR pass 1 (Oliveira & Brauwers 2007, section 3.1): outward normal and (in alpha)
 //    -z_view of the back surface. Drawn with GL_GREATER and depth cleared to 0, so the furthest surface
 //    wins whatever the mesh's winding; empty texels keep 0, which is what the search tests
@@ -69,6 +71,7 @@ vec3 rfReconstructPositionVC()
 
 //RF::Impl
   {
+    vec4 rfDataColour = gl_FragData[0]; // RF_DATA_COLOUR, as VTK's colour code left it
     vec3 rfP = RF_POSITION_VC;
     vec3 rfN = rfSafeNormal(RF_NORMAL_VC, rfP);
     vec3 rfV = rfViewDirection(rfP);
@@ -89,10 +92,19 @@ vec3 rfReconstructPositionVC()
     else
     {
       gl_FragData[0] = vec4(rf_oct_encode(dot(rfN, rfV) > 0.0 ? -rfN : rfN), -rfP.z, rfMaterial);
+#ifdef RF_GBUFFER_COLOUR
+      // Literal indices: VTK maps gl_FragData[n] to its outputs by their text.
+      gl_FragData[1] = vec4(clamp(rfDataColour.rgb, 0.0, 1.0), 1.0);
+#endif
 #ifdef RF_GBUFFER_NORMAL_DISTANCE
       // d_N is measured in model coordinates: scaled with the actor; -1 marks "none".
-      gl_FragData[1] = vec4(
+      vec4 rfNormalDistanceOut = vec4(
         rfHaveNormalDistance == 1 ? rfNormalDistanceVSOut * rfModelScale : -1.0, 0.0, 0.0, 1.0);
+#if RF_GBUFFER_NORMAL_DISTANCE == 1
+      gl_FragData[1] = rfNormalDistanceOut;
+#else
+      gl_FragData[2] = rfNormalDistanceOut;
+#endif
 #endif
     }
   }

@@ -6,10 +6,14 @@
 // its depth, so the opaque scene's depth test keeps hidden glass hidden.
 // Defines set by the pass: RF_METHOD_{SIR,DIR,ISR,SSP}, RF_TIR_CLAMP, RF_FRESNEL,
 // RF_ENV_CUBEMAP or RF_ENV_BACKGROUND (else the built-in environment), RF_SCENE_REFRACTION,
-// RF_SCENE_STEPS, RF_MAX_MATERIALS, RF_DEBUG_OUTPUT and the method's own.
+// RF_SCENE_STEPS, RF_TINT, RF_MAX_MATERIALS, RF_DEBUG_OUTPUT and the method's own.
 in vec2 texCoord;
 uniform sampler2D rfFrontSurface;
 uniform sampler2D rfFrontDepth;
+#ifdef RF_TINT
+uniform sampler2D rfFrontColour;
+uniform float rfAbsorptionDistance;
+#endif
 uniform float rfMaterialIOR[RF_MAX_MATERIALS];
 uniform int rfParallel;
 uniform mat4 rfVCDC;
@@ -190,8 +194,16 @@ void main()
 #else
   float rfF = 0.0;
 #endif
-  vec3 rfColour = rfF * rfEnvironment(reflect(rfV, rfN1)) +
-    (1.0 - rfF) * rfTransmittedColour(texCoord, rfN1, rfT1, rfP2, rfT2);
+  vec3 rfTransmitted = rfTransmittedColour(texCoord, rfN1, rfT1, rfP2, rfT2);
+#ifdef RF_TINT
+  // Beer-Lambert: the data's colour is what light keeps after rfAbsorptionDistance inside the
+  // glass; along the measured path |P2 - P1| it keeps colour^(|P2 - P1| / distance). Where no
+  // exit was found (SIR, TIR at the entry) the path is taken as that distance.
+  vec3 rfTint = texelFetch(rfFrontColour, rfPixel, 0).rgb;
+  float rfPath = length(rfP2 - rfP) > 0.0 ? length(rfP2 - rfP) : rfAbsorptionDistance;
+  rfTransmitted *= pow(max(rfTint, vec3(1.0 / 255.0)), vec3(rfPath / rfAbsorptionDistance));
+#endif
+  vec3 rfColour = rfF * rfEnvironment(reflect(rfV, rfN1)) + (1.0 - rfF) * rfTransmitted;
   gl_FragData[0] = vec4(rfColour, 1.0);
 #endif
 }

@@ -1,8 +1,9 @@
 // Each method allocates exactly the render targets it reads, and the pass's byte count
 // (GetTextureBytes, what the benchmark's memory column reports) is what the driver allocated.
 // The expected bytes per pixel are written out here from the targets' formats (see
-// vtkRefractionTargets.h): front G-buffer RGBA32F + DEPTH32F = 20; back capture RGBA32F normal
-// and depth + DEPTH32F = 20; ISR's d_N R32F = 4; SSP's scene copy RGBA8 = 4; DIR's
+// vtkRefractionTargets.h): front G-buffer RGBA32F + DEPTH32F = 20, and the data's colour RGBA8
+// = 4 for the methods that tint (all but SSP); back capture RGBA32F normal and depth + DEPTH32F
+// = 20; ISR's d_N R32F = 4; SSP's scene copy RGBA8 = 4; DIR's
 // reduction chain RG32F = 8 per texel of each halved level; the debug output 2 x RGBA32F.
 #include "vtkRefractionPass.h"
 
@@ -62,7 +63,8 @@ int main()
     const char* Name;
     unsigned long long Expected;
   };
-  const unsigned long long front = 20 * pixels;
+  const unsigned long long front = 24 * pixels;
+  const unsigned long long frontUntinted = 20 * pixels;
   const unsigned long long back = 20 * pixels;
   const unsigned long long reduction = 8 * ReductionTexels(width, height);
   const Case cases[] = {
@@ -74,14 +76,17 @@ int main()
     { vtkRefractionPass::ISR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "ISR",
       front + back + 4 * pixels },
     { vtkRefractionPass::SSP, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "SSP",
-      front + 4 * pixels },
+      frontUntinted + 4 * pixels },
     { vtkRefractionPass::DIR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, true, "DIR, debug",
       front + back + reduction + 32 * pixels },
     // Back to the cheapest: what SIR no longer needs is released.
     { vtkRefractionPass::SIR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "SIR again", front },
+    { vtkRefractionPass::SIR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "SIR, no tint",
+      frontUntinted },
   };
   for (const Case& c : cases)
   {
+    pass->SetDataColour(c.Expected != frontUntinted);
     pass->SetMethod(c.Method);
     pass->SetDepthRangeMode(c.DepthRange);
     pass->SetDebugOutput(c.Debug);

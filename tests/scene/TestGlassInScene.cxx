@@ -7,6 +7,9 @@
 //                     plane upside down (blue in its upper part, red in its lower part)
 //   front_no_leak     an unlit green box in front of the glass, beside it: the glass shows no
 //                     green (exactly as many green pixels as without the glass)
+//   data_colour       a sphere coloured by its height through a lookup table (blue below, red
+//                     above) tints the glass: its upper part reddish, its lower part bluish,
+//                     and both neutral with DataColour off
 #include "vtkRefractionPass.h"
 
 #include "rfTestScene.h"
@@ -16,6 +19,8 @@
 #include <vtkCamera.h>
 #include <vtkConeSource.h>
 #include <vtkCubeSource.h>
+#include <vtkElevationFilter.h>
+#include <vtkLookupTable.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPlaneSource.h>
@@ -225,6 +230,67 @@ int FrontNoLeak()
   RF_REQUIRE(greenWith == greenWithout, "the box in front leaks into the glass");
   return EXIT_SUCCESS;
 }
+
+int DataColour()
+{
+  Scene scene(1.5);
+  vtkNew<vtkPlaneSource> back;
+  back->SetOrigin(-6.0, -6.0, -5.0);
+  back->SetPoint1(6.0, -6.0, -5.0);
+  back->SetPoint2(-6.0, 6.0, -5.0);
+  scene.Renderer->AddActor(Flat(back->GetOutputPort(), 0.95, 0.95, 0.95));
+  // The glass coloured by height: VTK's default lookup table runs from red (low) to blue
+  // (high); reversed here so that red is above.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(96);
+  sphere->SetPhiResolution(96);
+  vtkNew<vtkElevationFilter> height;
+  height->SetInputConnection(sphere->GetOutputPort());
+  height->SetLowPoint(0.0, -0.5, 0.0);
+  height->SetHighPoint(0.0, 0.5, 0.0);
+  vtkNew<vtkLookupTable> table;
+  table->SetHueRange(0.667, 0.0);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(height->GetOutputPort());
+  mapper->SetLookupTable(table);
+  mapper->SetScalarRange(0.0, 1.0);
+  scene.Glass->SetMapper(mapper);
+  struct Tint
+  {
+    double UpperRedMinusBlue = 0.0, LowerRedMinusBlue = 0.0;
+  };
+  auto measure = [](vtkImageData* image) {
+    Tint t;
+    const int c = kSize / 2;
+    int n = 0;
+    for (int y = 8; y <= 20; ++y)
+    {
+      for (int x = c - 6; x <= c + 6; ++x, ++n)
+      {
+        const unsigned char* up = Pixel(image, x, c + y);
+        const unsigned char* down = Pixel(image, x, c - y);
+        t.UpperRedMinusBlue += up[0] - up[2];
+        t.LowerRedMinusBlue += down[0] - down[2];
+      }
+    }
+    t.UpperRedMinusBlue /= n;
+    t.LowerRedMinusBlue /= n;
+    return t;
+  };
+  const Tint on = measure(scene.Render());
+  scene.Pass->DataColourOff();
+  const Tint off = measure(scene.Render());
+  std::printf("data_colour: red minus blue, upper/lower part: %.1f / %.1f tinted, %.1f / %.1f "
+              "with DataColour off\n",
+    on.UpperRedMinusBlue, on.LowerRedMinusBlue, off.UpperRedMinusBlue, off.LowerRedMinusBlue);
+  // Without DataColour what shows is the nearly white plane and, near the rim, the bluish
+  // gradient background: a faint cast, the same above and below.
+  RF_REQUIRE(std::abs(off.UpperRedMinusBlue) < 20.0 && std::abs(off.LowerRedMinusBlue) < 20.0,
+    "without DataColour the glass is tinted all the same");
+  RF_REQUIRE(on.UpperRedMinusBlue - off.UpperRedMinusBlue > 60.0, "the upper part is not reddish");
+  RF_REQUIRE(off.LowerRedMinusBlue - on.LowerRedMinusBlue > 60.0, "the lower part is not bluish");
+  return EXIT_SUCCESS;
+}
 }
 
 int main(int argc, char* argv[])
@@ -241,6 +307,10 @@ int main(int argc, char* argv[])
   if (name == "front_no_leak")
   {
     return FrontNoLeak();
+  }
+  if (name == "data_colour")
+  {
+    return DataColour();
   }
   std::fprintf(stderr, "unknown case '%s'\n", name.c_str());
   return EXIT_FAILURE;

@@ -110,6 +110,12 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
      << (this->DepthRangeMode == DEPTH_RANGE_REDUCTION ? "reduction" : "bounds") << "\n";
   os << indent << "TIRPolicy: " << (this->TIRPolicy == TIR_CLAMP ? "clamp" : "reflect") << "\n";
   os << indent << "Fresnel: " << this->Fresnel << "\n";
+  os << indent << "EnvironmentMode: "
+     << (this->EnvironmentMode == ENVIRONMENT_RENDERER ? "renderer" : "builtin") << "\n";
+  os << indent << "SceneRefraction: " << this->SceneRefraction << "\n";
+  os << indent << "DataColour: " << this->DataColour << "\n";
+  os << indent << "AbsorptionDistance: " << this->AbsorptionDistance << "\n";
+  os << indent << "TextureBytes: " << this->GetTextureBytes() << "\n";
   os << indent << "DebugOutput: " << this->DebugOutput << "\n";
   os << indent << "NumberOfGlassProps: " << this->NumberOfGlassProps << "\n";
   os << indent << "DelegatePass: ";

@@ -429,20 +429,21 @@ const vtkRefractionGeometryStage::Surface& vtkRefractionGeometryStage::GetSurfac
     }
   }
   std::uint64_t edgeSum = 0;
+  // Boundary edges, whatever the winding: a symmetric function of the ends, XOR-summed over
+  // the edges' uses, vanishes when every edge is used an even number of times.
+  std::uint64_t edgeParity = 0;
   vtkCellArray* polys = poly->GetPolys();
   vtkIdType count = 0;
   const vtkIdType* ids = nullptr;
   double a[3];
   double b[3];
   double c[3];
+  // Polygons of no area (repeated or collinear points) cover nothing: their edges are left
+  // out of both tests, so degenerate slivers do not make a closed surface open (a genuine
+  // surface made partly of such slivers would count as open, and be drawn as a thin sheet).
+  const double minimumArea2 = 1e-24 * extent * extent * extent * extent;
   for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
   {
-    for (vtkIdType j = 0; j < count; ++j)
-    {
-      const vtkIdType from = ids[j];
-      const vtkIdType to = ids[(j + 1) % count];
-      edgeSum += keys[0][from] * keys[1][to] - keys[0][to] * keys[1][from];
-    }
     if (count < 3)
     {
       continue;
@@ -452,6 +453,7 @@ const vtkRefractionGeometryStage::Surface& vtkRefractionGeometryStage::GetSurfac
     {
       a[k] -= centre[k];
     }
+    double area[3] = { 0.0, 0.0, 0.0 };
     for (vtkIdType j = 1; j + 1 < count; ++j)
     {
       poly->GetPoint(ids[j], b);
@@ -463,10 +465,38 @@ const vtkRefractionGeometryStage::Surface& vtkRefractionGeometryStage::GetSurfac
       }
       volume += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
         a[2] * (b[0] * c[1] - b[1] * c[0]);
+      const double ab[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+      const double ac[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+      area[0] += ab[1] * ac[2] - ab[2] * ac[1];
+      area[1] += ab[2] * ac[0] - ab[0] * ac[2];
+      area[2] += ab[0] * ac[1] - ab[1] * ac[0];
+    }
+    double longest2 = 0.0;
+    for (vtkIdType j = 0; j < count; ++j)
+    {
+      poly->GetPoint(ids[j], b);
+      poly->GetPoint(ids[(j + 1) % count], c);
+      longest2 = std::max(longest2,
+        (b[0] - c[0]) * (b[0] - c[0]) + (b[1] - c[1]) * (b[1] - c[1]) + (b[2] - c[2]) * (b[2] - c[2]));
+    }
+    // Twice the area below 1e-5 of the longest edge squared: a sliver (height under 1e-5 of
+    // its base), as collinear points rounded to floats make.
+    const double area2 = area[0] * area[0] + area[1] * area[1] + area[2] * area[2];
+    if (area2 <= minimumArea2 || area2 <= 1e-10 * longest2 * longest2)
+    {
+      continue;
+    }
+    for (vtkIdType j = 0; j < count; ++j)
+    {
+      const vtkIdType from = ids[j];
+      const vtkIdType to = ids[(j + 1) % count];
+      edgeSum += keys[0][from] * keys[1][to] - keys[0][to] * keys[1][from];
+      edgeParity ^= keys[0][from] * keys[1][to] + keys[0][to] * keys[1][from];
     }
   }
   surface.WindingSign = volume < 0.0 ? -1 : 1;
   surface.Closed = edgeSum == 0 && poly->GetNumberOfStrips() == 0 && polys->GetNumberOfCells() > 0;
+  surface.Boundary = edgeParity != 0 && poly->GetNumberOfStrips() == 0;
   return surface;
 }
 

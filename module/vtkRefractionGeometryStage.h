@@ -62,6 +62,9 @@ public:
   /// Props drawn by the last draw.
   int GetNumberOfDrawnProps() const { return this->NumberOfRenderedProps; }
 
+  /// Whether a prop's surface has boundary edges (an open sheet: no back surface to find).
+  bool HasBoundary(vtkProp* prop) { return this->GetSurface(prop).Boundary; }
+
   void Render(const vtkRenderState* s) override;
   bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
@@ -89,7 +92,8 @@ private:
   {
     vtkMTimeType Time = 0;
     int WindingSign = 1;
-    bool Closed = false;
+    bool Closed = false;   ///< closed and consistently wound: faces can be culled
+    bool Boundary = false; ///< an edge used once (an open surface)
   };
   const Surface& GetSurface(vtkProp* prop);
   void CullHiddenFaces(vtkProp* prop);

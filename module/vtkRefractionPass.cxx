@@ -32,10 +32,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 vtkStandardNewMacro(vtkRefractionPass);
 vtkInformationKeyMacro(vtkRefractionPass, GLASS, Integer);
 vtkInformationKeyMacro(vtkRefractionPass, INDEX_OF_REFRACTION, Double);
+vtkInformationKeyMacro(vtkRefractionPass, SURFACE_MODEL, Integer);
 
 namespace
 {
@@ -150,6 +152,25 @@ bool vtkRefractionPass::MakeGlass(vtkProp* prop, double indexOfRefraction)
   keys->Set(INDEX_OF_REFRACTION(), indexOfRefraction);
   prop->Modified();
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::SetSurfaceModel(vtkProp* prop, int model)
+{
+  if (!prop)
+  {
+    return;
+  }
+  vtkInformation* keys = GetOrCreateKeys(prop);
+  if (model == SURFACE_AUTO)
+  {
+    keys->Remove(SURFACE_MODEL());
+  }
+  else
+  {
+    keys->Set(SURFACE_MODEL(), model == SURFACE_THIN_SHEET ? SURFACE_THIN_SHEET : SURFACE_SOLID);
+  }
+  prop->Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -425,10 +446,47 @@ void vtkRefractionPass::RenderGlass(
     return;
   }
   std::vector<float> materialIOR;
+  std::vector<float> materialSheet;
+  std::vector<vtkProp*> sheets;
   for (vtkProp* prop : glass)
   {
     materialIOR.push_back(static_cast<float>(GetIndexOfRefraction(prop)));
+    vtkInformation* keys = prop->GetPropertyKeys();
+    const int model = keys && keys->Has(SURFACE_MODEL()) ? keys->Get(SURFACE_MODEL()) : SURFACE_AUTO;
+    const bool sheet = model == SURFACE_THIN_SHEET ||
+      (model == SURFACE_AUTO && this->GeometryStage->HasBoundary(prop));
+    double thickness = 0.0;
+    if (sheet)
+    {
+      thickness = this->ThinSheetThickness;
+      const double* b = prop->GetBounds();
+      if (!(thickness > 0.0) && b && b[0] <= b[1])
+      {
+        thickness = 0.01 *
+          std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+            (b[5] - b[4]) * (b[5] - b[4]));
+      }
+      thickness = thickness > 0.0 ? thickness : 1e-3;
+      if (model == SURFACE_AUTO)
+      {
+        sheets.push_back(prop);
+      }
+    }
+    materialSheet.push_back(static_cast<float>(thickness));
   }
+  // Say once which props were taken for thin sheets (until the set changes).
+  if (!sheets.empty() && sheets != this->ThinSheetsReported)
+  {
+    std::ostringstream names;
+    for (vtkProp* prop : sheets)
+    {
+      names << " " << prop->GetClassName() << " " << prop;
+    }
+    vtkWarningMacro("Glass prop(s)" << names.str()
+                                    << " have open surfaces (boundary edges): drawn as thin sheets "
+                                       "(vtkRefractionPass::SetSurfaceModel to choose).");
+  }
+  this->ThinSheetsReported = sheets;
   if (static_cast<int>(glass.size()) > vtkRefractionShadeStage::MaximumMaterials)
   {
     vtkWarningMacro(<< glass.size() << " glass props: the last "
@@ -484,12 +542,12 @@ void vtkRefractionPass::RenderGlass(
   this->NumberOfRenderedProps += this->GeometryStage->GetNumberOfDrawnProps();
 
   this->StartTimer(TIMED_SHADE);
-  this->ShadeStage->Render(ren, method, this, this->Targets, frame, materialIOR);
+  this->ShadeStage->Render(ren, method, this, this->Targets, frame, materialIOR, materialSheet);
   this->StopTimer(TIMED_SHADE);
   if (this->DebugOutput && this->ShadeStage->Prepare(ren, method, this, frame, true))
   {
-    this->DebugImage =
-      this->ShadeStage->RenderDebug(ren, method, this, this->Targets, frame, materialIOR);
+    this->DebugImage = this->ShadeStage->RenderDebug(
+      ren, method, this, this->Targets, frame, materialIOR, materialSheet);
   }
   vtkOpenGLCheckErrorMacro("failed after the refraction pass");
 }

@@ -93,7 +93,22 @@ public:
   /// Per-actor glass settings, stored on the prop's property keys.
   static vtkInformationIntegerKey* GLASS();
   static vtkInformationDoubleKey* INDEX_OF_REFRACTION();
+  /**
+   * How a glass prop's surface is modelled: SURFACE_AUTO (the key absent: a thin sheet when
+   * the mesh has boundary edges, a solid otherwise), SURFACE_SOLID (refract in, search the
+   * exit, refract out) or SURFACE_THIN_SHEET (a slab of ThinSheetThickness: the ray is offset
+   * and tinted, and leaves in its own direction; no exit search).
+   */
+  static vtkInformationIntegerKey* SURFACE_MODEL();
   ///@}
+  enum SurfaceModelType
+  {
+    SURFACE_AUTO = -1,
+    SURFACE_SOLID = 0,
+    SURFACE_THIN_SHEET = 1
+  };
+  /// Set a prop's surface model (on its property keys).
+  static void SetSurfaceModel(vtkProp* prop, int model);
 
   /**
    * Mark a prop as glass with an index of refraction (1.5 by default). An invalid index
@@ -246,6 +261,13 @@ public:
   ///@}
 
   ///@{
+  /// Thickness of the thin sheets (see SURFACE_MODEL); 0 (default): 1% of the prop's
+  /// bounding-box diagonal.
+  vtkSetClampMacro(ThinSheetThickness, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ThinSheetThickness, double);
+  ///@}
+
+  ///@{
   /// Blend reflection and refraction with the exact dielectric Fresnel term (on by default).
   vtkSetMacro(Fresnel, bool);
   vtkGetMacro(Fresnel, bool);
@@ -333,6 +355,8 @@ protected:
   bool SceneRefraction = true;
   bool DataColour = true;
   double AbsorptionDistance = 0.0;
+  double ThinSheetThickness = 0.0;
+  std::vector<vtkProp*> ThinSheetsReported;
   int NumberOfGlassProps = 0;
 
   vtkNew<vtkRefractionGlassChecker> GlassChecker;

@@ -148,7 +148,7 @@ bool vtkRefractionShadeStage::Build(vtkOpenGLRenderer* ren, Program& program, co
 //------------------------------------------------------------------------------
 void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* method,
   vtkRefractionPass* settings, vtkRefractionTargets* targets, const Frame& frame,
-  const std::vector<float>& materialIOR, bool debug)
+  const std::vector<float>& materialIOR, const std::vector<float>& materialSheet, bool debug)
 {
   Program* program = this->GetProgram(debug);
   if (!program->Quad)
@@ -207,6 +207,12 @@ void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* 
   std::vector<float> ior(materialIOR);
   ior.resize(MaximumMaterials, ior.empty() ? 1.5f : ior.back());
   shader->SetUniform1fv("rfMaterialIOR", MaximumMaterials, ior.data());
+  std::vector<float> sheet(materialSheet);
+  sheet.resize(MaximumMaterials, sheet.empty() ? 0.f : sheet.back());
+  if (shader->IsUniformUsed("rfMaterialSheet"))
+  {
+    shader->SetUniform1fv("rfMaterialSheet", MaximumMaterials, sheet.data());
+  }
   shader->SetUniformi("rfParallel", frame.Parallel ? 1 : 0);
   shader->SetUniformMatrix("rfVCDC", frame.Projection);
   shader->SetUniformMatrix("rfDCVC", frame.InverseProjection);
@@ -231,7 +237,7 @@ void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* 
 //------------------------------------------------------------------------------
 void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod* method,
   vtkRefractionPass* settings, vtkRefractionTargets* targets, const Frame& frame,
-  const std::vector<float>& materialIOR)
+  const std::vector<float>& materialIOR, const std::vector<float>& materialSheet)
 {
   vtkOpenGLState* ostate = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
   // The glass is opaque: its colour replaces the scene's, its depth goes into the scene's
@@ -246,13 +252,13 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
   ostate->vtkglDepthMask(GL_TRUE);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   ostate->vtkglDisable(GL_BLEND);
-  this->Draw(ren, method, settings, targets, frame, materialIOR, false);
+  this->Draw(ren, method, settings, targets, frame, materialIOR, materialSheet, false);
 }
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkImageData> vtkRefractionShadeStage::RenderDebug(vtkOpenGLRenderer* ren,
   vtkRefractionMethod* method, vtkRefractionPass* settings, vtkRefractionTargets* targets,
-  const Frame& frame, const std::vector<float>& materialIOR)
+  const Frame& frame, const std::vector<float>& materialIOR, const std::vector<float>& materialSheet)
 {
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   vtkOpenGLState* ostate = renWin->GetState();
@@ -282,7 +288,7 @@ vtkSmartPointer<vtkImageData> vtkRefractionShadeStage::RenderDebug(vtkOpenGLRend
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglDisable(GL_DEPTH_TEST);
-    this->Draw(ren, method, settings, targets, frame, materialIOR, true);
+    this->Draw(ren, method, settings, targets, frame, materialIOR, materialSheet, true);
     for (int i = 0; i < 2; ++i)
     {
       pixels[i].resize(4 * count);

@@ -62,12 +62,12 @@ public:
 
   /// Shades the glass into the framebuffer bound now (the renderer's viewport).
   void Render(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, vtkRefractionPass* settings,
-    vtkRefractionTargets* targets, const Frame& frame, const std::vector<float>& materialIOR);
+    vtkRefractionTargets* targets, const Frame& frame, const std::vector<float>& materialIOR, const std::vector<float>& materialSheet);
 
   /// Renders the debug output into DEBUG_0/DEBUG_1 and returns it as an image.
   vtkSmartPointer<vtkImageData> RenderDebug(vtkOpenGLRenderer* ren, vtkRefractionMethod* method,
     vtkRefractionPass* settings, vtkRefractionTargets* targets, const Frame& frame,
-    const std::vector<float>& materialIOR);
+    const std::vector<float>& materialIOR, const std::vector<float>& materialSheet);
 
   void ReleaseGraphicsResources(vtkWindow* w);
 
@@ -84,7 +84,7 @@ private:
   bool Build(vtkOpenGLRenderer* ren, Program& program, const std::string& source);
   void Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, vtkRefractionPass* settings,
     vtkRefractionTargets* targets, const Frame& frame, const std::vector<float>& materialIOR,
-    bool debug);
+    const std::vector<float>& materialSheet, bool debug);
 
   std::unique_ptr<Program> Shade;
   std::unique_ptr<Program> Debug;

@@ -15,6 +15,8 @@ uniform sampler2D rfFrontColour;
 uniform float rfAbsorptionDistance;
 #endif
 uniform float rfMaterialIOR[RF_MAX_MATERIALS];
+// > 0: the material is a thin sheet of that thickness (an open surface), 0: a solid.
+uniform float rfMaterialSheet[RF_MAX_MATERIALS];
 uniform int rfParallel;
 uniform mat4 rfVCDC;
 uniform mat4 rfDCVC;
@@ -168,7 +170,9 @@ void main()
     discard; // no glass here
   }
   gl_FragDepth = texelFetch(rfFrontDepth, rfPixel, 0).r;
-  float rfIOR = rfMaterialIOR[clamp(int(rfFront.w + 0.5) - 1, 0, RF_MAX_MATERIALS - 1)];
+  int rfMaterial = clamp(int(rfFront.w + 0.5) - 1, 0, RF_MAX_MATERIALS - 1);
+  float rfIOR = rfMaterialIOR[rfMaterial];
+  float rfSheet = rfMaterialSheet[rfMaterial];
   vec3 rfP = rfPositionFromDepth(texCoord, rfFront.z);
   vec3 rfV = rfViewDirection(rfP);
   vec3 rfN1 = rf_oct_decode(rfFront.xy);
@@ -181,7 +185,14 @@ void main()
   vec3 rfP2 = rfP;
   int rfTIR = rfTIRIn ? 2 : 0;
   vec3 rfN2;
-  if (!rfTIRIn && rfFindExit(rfP, rfV, rfN1, rfT1, rfEtaIn, rfP2, rfN2))
+  if (!rfTIRIn && rfSheet > 0.0)
+  {
+    // A thin sheet: a slab of thickness rfSheet. The ray crosses it along T1 and leaves
+    // parallel to where it came from, shifted; there is no back surface to search.
+    rfP2 = rfP + (rfSheet / max(-dot(rfT1, rfN1), 1e-3)) * rfT1;
+    rfT2 = rfV;
+  }
+  else if (!rfTIRIn && rfFindExit(rfP, rfV, rfN1, rfT1, rfEtaIn, rfP2, rfN2))
   {
     rfTIR = rfRefractWithPolicy(rfT1, -normalize(rfN2), rfIOR, rfT2);
   }

@@ -288,10 +288,15 @@ bool vtkRefractionGeometryStage::PostReplaceShaderValues(std::string&, std::stri
   const bool haveVertexVC = fragmentShader.find("vec4 vertexVC") != std::string::npos;
   const bool haveNormal = fragmentShader.find("normalVCVSOutput") != std::string::npos;
   std::ostringstream defines;
+  // The data's colour as VTK's colour code leaves it: with EdgeVisibility, VTK has already
+  // mixed the edge colour in by `emix` (into ambient and diffuse, or ambient alone unlit), and
+  // the G-buffer keeps emix too, so that the shading stage draws the edges over the glass.
+  const bool haveColour = fragmentShader.find("vec3 diffuseColor") != std::string::npos &&
+    fragmentShader.find("vec3 ambientColor") != std::string::npos;
   defines << this->Defines << "#define RF_DATA_COLOUR "
-          << (fragmentShader.find("vec3 diffuseColor") != std::string::npos
-                 ? "vec4(diffuseColor, opacity)"
-                 : "vec4(1.0)")
+          << (haveColour ? "vec4(ambientColor + diffuseColor, opacity)" : "vec4(1.0)")
+          << "\n#define RF_EDGE_MIX "
+          << (fragmentShader.find("float emix") != std::string::npos ? "emix" : "0.0")
           << "\n#define RF_POSITION_VC "
           << (haveVertexVC ? "vertexVC.xyz" : "rfReconstructPositionVC()") << "\n"
           << "#define RF_NORMAL_VC " << (haveNormal ? "normalVCVSOutput" : "vec3(0.0)") << "\n";

@@ -7,7 +7,8 @@
 // selects), so switching stages costs no shader rebuild.
 //  1 front: octahedral view-space normal facing the viewer, -z_view, material index + 1 (a
 //    cleared texel, 0, is no glass); with RF_GBUFFER_COLOUR (output 1) the data's
-//    colour VTK computed (the actor's, or the scalars through the lookup table), with
+//    colour VTK computed (the actor's, or the scalars through the lookup table; alpha: how much
+//    of an edge VTK draws there, with EdgeVisibility), with
 //    RF_GBUFFER_NORMAL_DISTANCE (its output index) ISR's d_N.
 //  2 back: DIR pass 1 (Oliveira & Brauwers 2007, section 3.1): outward normal and (in alpha)
 //    -z_view of the back surface. Drawn with GL_GREATER and depth cleared to 0, so the furthest surface
@@ -94,7 +95,7 @@ vec3 rfReconstructPositionVC()
       gl_FragData[0] = vec4(rf_oct_encode(dot(rfN, rfV) > 0.0 ? -rfN : rfN), -rfP.z, rfMaterial);
 #ifdef RF_GBUFFER_COLOUR
       // Literal indices: VTK maps gl_FragData[n] to its outputs by their text.
-      gl_FragData[1] = vec4(clamp(rfDataColour.rgb, 0.0, 1.0), 1.0);
+      gl_FragData[1] = vec4(clamp(rfDataColour.rgb, 0.0, 1.0), RF_EDGE_MIX);
 #endif
 #ifdef RF_GBUFFER_NORMAL_DISTANCE
       // d_N is measured in model coordinates: scaled with the actor; -1 marks "none".

@@ -210,11 +210,16 @@ void main()
   // Beer-Lambert: the data's colour is what light keeps after rfAbsorptionDistance inside the
   // glass; along the measured path |P2 - P1| it keeps colour^(|P2 - P1| / distance). Where no
   // exit was found (SIR, TIR at the entry) the path is taken as that distance.
-  vec3 rfTint = texelFetch(rfFrontColour, rfPixel, 0).rgb;
+  vec4 rfDataColour = texelFetch(rfFrontColour, rfPixel, 0);
+  vec3 rfTint = rfDataColour.rgb;
   float rfPath = length(rfP2 - rfP) > 0.0 ? length(rfP2 - rfP) : rfAbsorptionDistance;
   rfTransmitted *= pow(max(rfTint, vec3(1.0 / 255.0)), vec3(rfPath / rfAbsorptionDistance));
 #endif
   vec3 rfColour = rfF * rfEnvironment(reflect(rfV, rfN1)) + (1.0 - rfF) * rfTransmitted;
+#ifdef RF_TINT
+  // EdgeVisibility: the edges over the glass, as VTK draws them over a surface.
+  rfColour = mix(rfColour, rfDataColour.rgb, rfDataColour.a);
+#endif
   gl_FragData[0] = vec4(rfColour, 1.0);
 #endif
 }

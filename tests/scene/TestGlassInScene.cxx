@@ -11,6 +11,8 @@
 //                     as thin sheets: the scene behind shows through nearly undisturbed, as
 //                     through panes; forced to be a solid, the exit search pairs the first
 //                     sheet with the second and shifts the stripes' edges
+//   edges             EdgeVisibility on a glass actor draws its edges (pure green here) over
+//                     the glass; off, no green
 //   data_colour       a sphere coloured by its height through a lookup table (blue below, red
 //                     above) tints the glass: its upper part reddish, its lower part bluish,
 //                     and both neutral with DataColour off
@@ -320,6 +322,37 @@ int OpenSheet()
   return EXIT_SUCCESS;
 }
 
+int Edges()
+{
+  Scene scene(1.5);
+  scene.Glass->GetProperty()->EdgeVisibilityOn();
+  scene.Glass->GetProperty()->SetEdgeColor(0.0, 1.0, 0.0);
+  scene.Glass->GetProperty()->SetLineWidth(1.5);
+  auto on = scene.Render();
+  scene.Glass->GetProperty()->EdgeVisibilityOff();
+  auto off = scene.Render();
+  auto green = [](vtkImageData* image) {
+    int dims[3];
+    image->GetDimensions(dims);
+    int n = 0;
+    for (int y = 0; y < dims[1]; ++y)
+    {
+      for (int x = 0; x < dims[0]; ++x)
+      {
+        const unsigned char* p = Pixel(image, x, y);
+        n += p[1] > p[0] + 60 && p[1] > p[2] + 60 ? 1 : 0;
+      }
+    }
+    return n;
+  };
+  const int withEdges = green(on);
+  const int without = green(off);
+  std::printf("edges: %d green pixels with EdgeVisibility, %d without\n", withEdges, without);
+  RF_REQUIRE(without == 0, "green without edges");
+  RF_REQUIRE(withEdges > 1000, "the edges are not drawn over the glass");
+  return EXIT_SUCCESS;
+}
+
 int DataColour()
 {
   Scene scene(1.5);
@@ -400,6 +433,10 @@ int main(int argc, char* argv[])
   if (name == "open_sheet")
   {
     return OpenSheet();
+  }
+  if (name == "edges")
+  {
+    return Edges();
   }
   if (name == "data_colour")
   {

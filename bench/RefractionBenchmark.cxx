@@ -1317,6 +1317,7 @@ int main(int argc, char* argv[])
   // first frame that uses it, and the plain render does not sample it.
   renderer->SetEnvironmentTexture(environment);
   vtkNew<vtkRefractionPass> pass;
+  pass->SetEnvironmentModeToBuiltin(); // what the reference traces without a cube map
   pass->SetGPUTiming(true);
   const std::vector<Setting> settings = Settings(options);
   const int ss = options.Supersample;

@@ -350,7 +350,8 @@ int BuildScene(const rfViewerOptions& o, const rfViewerSettings& s, Scene& scene
     scene.Renderer->SetBackground2(s.Background + 3);
     scene.Renderer->GradientBackgroundOn();
   }
-  if (!o.Environment.empty())
+  const bool builtinSky = o.Environment == "builtin";
+  if (!o.Environment.empty() && !builtinSky)
   {
 #ifdef REFRACTION_HAVE_IO
     std::string error;
@@ -370,6 +371,10 @@ int BuildScene(const rfViewerOptions& o, const rfViewerSettings& s, Scene& scene
 #endif
   }
   scene.Pass = vtkSmartPointer<vtkRefractionPass>::New();
+  if (builtinSky)
+  {
+    scene.Pass->SetEnvironmentModeToBuiltin();
+  }
   scene.Pass->SetMethod(s.Method);
   scene.Pass->SetSearchSteps(s.Steps);
   scene.Renderer->SetPass(scene.Pass);

@@ -214,12 +214,12 @@ public:
    * What the glass shows where its rays leave toward the surroundings. Always the renderer's
    * environment texture when it is a cube map (a lat-long image through
    * vtkEquirectangularToCubeMapTexture, vtkRefractionImageIO::ReadEnvironment), honouring
-   * EnvironmentUp and EnvironmentRight. Without one: ENVIRONMENT_RENDERER the renderer's
-   * background, solid or gradient (the colour the screen shows in that direction), so glass
-   * of IOR 1 is invisible; ENVIRONMENT_BUILTIN (default for now) the built-in sky and
-   * checkered ground (rf_builtin_environment). The built-in default stays until the glass
-   * takes colour from the data: over a solid background with nothing behind it, glass of any
-   * index would show only the background colour, that is nothing.
+   * EnvironmentUp and EnvironmentRight. Without one: ENVIRONMENT_RENDERER (default) the
+   * renderer's background, solid or gradient (the colour the screen shows in that direction),
+   * so glass of IOR 1 is invisible (and white glass alone over a solid background shows only
+   * that background: give it a colour, DataColour, or something behind it);
+   * ENVIRONMENT_BUILTIN the built-in sky and checkered ground (rf_builtin_environment), a
+   * named option for tests, benchmarks and demonstrations.
    */
   enum EnvironmentType
   {
@@ -351,7 +351,7 @@ protected:
   double ChromaticAberration = 0.0;
   bool SSPRefractionMask = true;
   bool GPUTiming = false;
-  int EnvironmentMode = ENVIRONMENT_BUILTIN;
+  int EnvironmentMode = ENVIRONMENT_RENDERER;
   bool SceneRefraction = true;
   bool DataColour = true;
   double AbsorptionDistance = 0.0;

@@ -263,6 +263,7 @@ int ZeroViewport(MessageLog* log)
   Look(rig);
   vtkNew<vtkRenderer> empty;
   vtkNew<vtkRefractionPass> pass;
+  pass->SetEnvironmentModeToBuiltin();
   empty->SetPass(pass);
   empty->SetViewport(0.25, 0.25, 0.25, 0.25);
   empty->SetLayer(0);

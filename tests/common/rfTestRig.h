@@ -209,6 +209,7 @@ struct Rig
 
   Rig(int width, int height)
   {
+    this->Glass->SetEnvironmentModeToBuiltin(); // the closed forms are of the built-in sky
     this->Glass->DebugOutputOn();
     this->Probe->Inner = this->Glass;
     this->Framebuffer->SetColorFormat(vtkTextureObject::Float32);

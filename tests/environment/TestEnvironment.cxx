@@ -87,6 +87,7 @@ void Build(Scene& scene, double ior)
   scene.Renderer->AddActor(scene.Glass);
   scene.Renderer->SetBackground(0.0, 0.0, 0.0);
   scene.Renderer->SetPass(scene.Pass);
+  scene.Pass->SetEnvironmentModeToBuiltin(); // without a cube map: the built-in sky (compared)
   scene.Window->SetSize(kSize, kSize);
   scene.Window->SetMultiSamples(0);
   scene.Window->SetOffScreenRendering(1);

@@ -33,6 +33,7 @@ int SphereCase(int argc, char* argv[], bool sir)
   vtkRefractionPass::MakeGlass(sphere, 1.5);
   renderer->AddActor(sphere);
   vtkNew<vtkRefractionPass> glass;
+  glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
   renderer->SetPass(glass);
   auto window = rftest::MakeWindow(renderer, kSize, kSize);
   rftest::LookAtOrigin(renderer, 5.0, 15.0);
@@ -57,6 +58,7 @@ int TorusCase(int argc, char* argv[])
   vtkRefractionPass::MakeGlass(torus, 1.33);
   renderer->AddActor(torus);
   vtkNew<vtkRefractionPass> glass;
+  glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
   renderer->SetPass(glass);
   auto window = rftest::MakeWindow(renderer, kSize, kSize);
   rftest::LookAtOrigin(renderer, 4.5, 10.0);
@@ -76,6 +78,7 @@ int IsosurfaceCase(int argc, char* argv[])
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   vtkNew<vtkRefractionPass> glass;
+  glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
   renderer->SetPass(glass);
   auto window = rftest::MakeWindow(renderer, kSize, kSize);
   surface->UpdateTimeStep(0.0);
@@ -107,6 +110,7 @@ int OpaqueOrderCase(int argc, char* argv[])
   renderer->AddActor(front);
   renderer->AddActor(back);
   vtkNew<vtkRefractionPass> glass;
+  glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
   renderer->SetPass(glass);
   auto window = rftest::MakeWindow(renderer, kSize, kSize);
   rftest::LookAtOrigin(renderer, 6.0, 0.0);
@@ -169,6 +173,7 @@ int SSPCase(int argc, char* argv[])
   renderer->AddActor(front);
   renderer->AddActor(back);
   vtkNew<vtkRefractionPass> glass;
+  glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
   glass->SetMethod(vtkRefractionPass::SSP);
   glass->SetSSPStrength(0.2);
   renderer->SetPass(glass);
@@ -226,6 +231,7 @@ int ISRCase(int argc, char* argv[], bool torus)
   vtkRefractionPass::MakeGlass(actor, torus ? 1.33 : 1.5);
   renderer->AddActor(actor);
   vtkNew<vtkRefractionPass> glass;
+  glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
   renderer->SetPass(glass);
   auto window = rftest::MakeWindow(renderer, kSize, kSize);
   rftest::LookAtOrigin(renderer, torus ? 4.5 : 5.0, torus ? 10.0 : 15.0);
@@ -272,6 +278,7 @@ int PassThroughCase(int argc, char* argv[])
   window->Render();
   auto plain = rftest::Grab(window);
   vtkNew<vtkRefractionPass> glass;
+  glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
   renderer->SetPass(glass);
   window->Render();
   auto withPass = rftest::Grab(window);

@@ -185,6 +185,7 @@ int main()
   for (const Variant& variant : variants)
   {
     vtkNew<vtkRefractionPass> pass;
+    pass->SetEnvironmentModeToBuiltin();
     variant.Apply(pass);
     renderer->SetPass(pass);
     const int before = output->Reported;

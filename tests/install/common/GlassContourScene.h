@@ -74,6 +74,7 @@ inline GlassContourScene BuildGlassContourScene(vtkRenderWindow* window, int siz
   coneActor->GetProperty()->SetColor(0.9, 0.45, 0.1);
 
   scene.Pass = vtkSmartPointer<vtkRefractionPass>::New();
+  scene.Pass->SetEnvironmentModeToBuiltin(); // the shared baseline shows the built-in sky
   scene.Pass->SetMethod(vtkRefractionPass::DIR);
 
   scene.Renderer = vtkSmartPointer<vtkRenderer>::New();

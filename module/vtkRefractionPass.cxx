@@ -1,5 +1,11 @@
 #include "vtkRefractionPass.h"
 
+#include "vtkActor.h"
+#include "vtkProperty.h"
+#include "vtkMapper.h"
+#include "vtkDataSet.h"
+#include "vtkPointData.h"
+#include "vtkCellData.h"
 #include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -41,6 +47,29 @@ vtkInformationKeyMacro(vtkRefractionPass, SURFACE_MODEL, Integer);
 
 namespace
 {
+// Whether a glass prop's pixels can be anything but white: a colour, scalar colours, edges.
+bool HasDataColour(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  if (!actor)
+  {
+    return false;
+  }
+  vtkProperty* property = actor->GetProperty();
+  double colour[3];
+  property->GetDiffuseColor(colour);
+  if (property->GetEdgeVisibility() || colour[0] < 1.0 || colour[1] < 1.0 || colour[2] < 1.0 ||
+    property->GetDiffuse() < 1.0 || property->GetAmbient() > 0.0)
+  {
+    return true;
+  }
+  vtkMapper* mapper = actor->GetMapper();
+  vtkDataSet* data = mapper ? vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+  return mapper && data && mapper->GetScalarVisibility() &&
+    (data->GetPointData()->GetScalars() || data->GetCellData()->GetScalars() ||
+      (mapper->GetArrayName() && mapper->GetArrayName()[0] != 0));
+}
+
 vtkInformation* GetOrCreateKeys(vtkProp* prop)
 {
   vtkInformation* keys = prop->GetPropertyKeys();
@@ -395,8 +424,17 @@ void vtkRefractionPass::RenderGlass(
     wanted[vtkRefractionTargets::SCENE_COLOR] = true;
     wanted[vtkRefractionTargets::SCENE_DEPTH] = true;
   }
-  // The data's colour, for methods that shade through the glass (SSP perturbs the scene).
-  const bool dataColour = this->DataColour && method->SupportsSceneRefraction();
+  // The data's colour, for methods that shade through the glass (SSP perturbs the scene), and
+  // only when a glass prop has one: white glass without scalar colours or edges needs no
+  // colour target and no tint in the shading.
+  bool dataColour = false;
+  if (this->DataColour && method->SupportsSceneRefraction())
+  {
+    for (vtkProp* prop : glass)
+    {
+      dataColour = dataColour || HasDataColour(prop);
+    }
+  }
   wanted[vtkRefractionTargets::FRONT_COLOR] = dataColour;
   wanted[vtkRefractionTargets::DEBUG_0] = this->DebugOutput;
   wanted[vtkRefractionTargets::DEBUG_1] = this->DebugOutput;

@@ -250,7 +250,8 @@ public:
    * colours through the lookup table, tints the glass by Beer-Lambert absorption: light that
    * travels AbsorptionDistance inside the glass keeps exactly that colour, light along the
    * measured path |P2 - P1| keeps colour^(|P2 - P1| / AbsorptionDistance), so thick parts are
-   * deeper in colour. White glass (the default actor colour) stays clear.
+   * deeper in colour. White glass (the default actor colour) stays clear, and when no glass
+   * prop has a colour, scalar colours or edges the colour is not even captured.
    * AbsorptionDistance 0 (default): half the largest bounding-box diagonal of the glass props.
    */
   vtkSetMacro(DataColour, bool);

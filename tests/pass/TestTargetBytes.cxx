@@ -2,7 +2,8 @@
 // (GetTextureBytes, what the benchmark's memory column reports) is what the driver allocated.
 // The expected bytes per pixel are written out here from the targets' formats (see
 // vtkRefractionTargets.h): front G-buffer RGBA32F + DEPTH32F = 20, and the data's colour RGBA8
-// = 4 for the methods that tint (all but SSP); back capture RGBA32F normal and depth + DEPTH32F
+// = 4 for the methods that tint (all but SSP) when the glass has a colour (it is light blue
+// here; white glass needs none); back capture RGBA32F normal and depth + DEPTH32F
 // = 20; ISR's d_N R32F = 4; SSP's scene copy RGBA8 = 4; DIR's
 // reduction chain RG32F = 8 per texel of each halved level; the debug output 2 x RGBA32F.
 #include "vtkRefractionPass.h"
@@ -10,6 +11,7 @@
 #include "rf_require.h"
 
 #include <vtkActor.h>
+#include <vtkProperty.h>
 #include <vtkNew.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderWindow.h>
@@ -44,6 +46,7 @@ int main()
   mapper->SetInputConnection(sphere->GetOutputPort());
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.8, 0.9, 1.0);
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   vtkNew<vtkRefractionPass> pass;
@@ -98,5 +101,13 @@ int main()
     RF_REQUIRE(bytes == c.Expected, "%s: %llu bytes allocated, %llu expected", c.Name, bytes,
       c.Expected);
   }
+  // White glass without scalar colours or edges: no colour target, even with DataColour on.
+  actor->GetProperty()->SetColor(1.0, 1.0, 1.0);
+  pass->SetDataColour(true);
+  pass->SetMethod(vtkRefractionPass::SIR);
+  window->Render();
+  std::printf("SIR, white   %10llu bytes, expected %llu\n", pass->GetTextureBytes(),
+    frontUntinted);
+  RF_REQUIRE(pass->GetTextureBytes() == frontUntinted, "white glass allocates a colour target");
   return EXIT_SUCCESS;
 }

@@ -1,11 +1,5 @@
 #include "vtkRefractionPass.h"
 
-#include "vtkActor.h"
-#include "vtkProperty.h"
-#include "vtkMapper.h"
-#include "vtkDataSet.h"
-#include "vtkPointData.h"
-#include "vtkCellData.h"
 #include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -25,6 +19,7 @@
 #include "vtkRefractionDepthRange.h"
 #include "vtkRefractionGeometryStage.h"
 #include "vtkRefractionGlassChecker.h"
+#include "vtkRefractionMaterials.h"
 #include "vtkRefractionMethod.h"
 #include "vtkRefractionOpaqueStep.h"
 #include "vtkRefractionShadeStage.h"
@@ -37,8 +32,6 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
-#include <cmath>
-#include <sstream>
 
 vtkStandardNewMacro(vtkRefractionPass);
 vtkInformationKeyMacro(vtkRefractionPass, GLASS, Integer);
@@ -47,29 +40,6 @@ vtkInformationKeyMacro(vtkRefractionPass, SURFACE_MODEL, Integer);
 
 namespace
 {
-// Whether a glass prop's pixels can be anything but white: a colour, scalar colours, edges.
-bool HasDataColour(vtkProp* prop)
-{
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  if (!actor)
-  {
-    return false;
-  }
-  vtkProperty* property = actor->GetProperty();
-  double colour[3];
-  property->GetDiffuseColor(colour);
-  if (property->GetEdgeVisibility() || colour[0] < 1.0 || colour[1] < 1.0 || colour[2] < 1.0 ||
-    property->GetDiffuse() < 1.0 || property->GetAmbient() > 0.0)
-  {
-    return true;
-  }
-  vtkMapper* mapper = actor->GetMapper();
-  vtkDataSet* data = mapper ? vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
-  return mapper && data && mapper->GetScalarVisibility() &&
-    (data->GetPointData()->GetScalars() || data->GetCellData()->GetScalars() ||
-      (mapper->GetArrayName() && mapper->GetArrayName()[0] != 0));
-}
-
 vtkInformation* GetOrCreateKeys(vtkProp* prop)
 {
   vtkInformation* keys = prop->GetPropertyKeys();
@@ -424,17 +394,10 @@ void vtkRefractionPass::RenderGlass(
     wanted[vtkRefractionTargets::SCENE_COLOR] = true;
     wanted[vtkRefractionTargets::SCENE_DEPTH] = true;
   }
-  // The data's colour, for methods that shade through the glass (SSP perturbs the scene), and
-  // only when a glass prop has one: white glass without scalar colours or edges needs no
-  // colour target and no tint in the shading.
-  bool dataColour = false;
-  if (this->DataColour && method->SupportsSceneRefraction())
-  {
-    for (vtkProp* prop : glass)
-    {
-      dataColour = dataColour || HasDataColour(prop);
-    }
-  }
+  this->Materials->Update(glass, this->GeometryStage,
+    this->DataColour && method->SupportsSceneRefraction(), this->AbsorptionDistance,
+    this->ThinSheetThickness);
+  const bool dataColour = this->Materials->GetDataColour();
   wanted[vtkRefractionTargets::FRONT_COLOR] = dataColour;
   wanted[vtkRefractionTargets::DEBUG_0] = this->DebugOutput;
   wanted[vtkRefractionTargets::DEBUG_1] = this->DebugOutput;
@@ -459,72 +422,14 @@ void vtkRefractionPass::RenderGlass(
     ren->GetBackground(frame.Background2);
   }
   frame.SceneRefraction = sceneRefraction;
-  frame.AbsorptionDistance = 0.0;
-  if (dataColour)
-  {
-    frame.AbsorptionDistance = this->AbsorptionDistance;
-    for (vtkProp* prop : glass)
-    {
-      const double* b = prop->GetBounds();
-      if (this->AbsorptionDistance <= 0.0 && b && b[0] <= b[1])
-      {
-        const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) +
-          (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
-        frame.AbsorptionDistance = std::max(frame.AbsorptionDistance, 0.5 * diagonal);
-      }
-    }
-    if (!(frame.AbsorptionDistance > 0.0))
-    {
-      frame.AbsorptionDistance = 1.0;
-    }
-  }
+  frame.AbsorptionDistance = this->Materials->GetAbsorptionDistance();
   frame.BoundsDepthRange = this->BoundsDepthRange;
   if (!this->ShadeStage->Prepare(ren, method, this, frame, false))
   {
     return;
   }
-  std::vector<float> materialIOR;
-  std::vector<float> materialSheet;
-  std::vector<vtkProp*> sheets;
-  for (vtkProp* prop : glass)
-  {
-    materialIOR.push_back(static_cast<float>(GetIndexOfRefraction(prop)));
-    vtkInformation* keys = prop->GetPropertyKeys();
-    const int model = keys && keys->Has(SURFACE_MODEL()) ? keys->Get(SURFACE_MODEL()) : SURFACE_AUTO;
-    const bool sheet = model == SURFACE_THIN_SHEET ||
-      (model == SURFACE_AUTO && this->GeometryStage->HasBoundary(prop));
-    double thickness = 0.0;
-    if (sheet)
-    {
-      thickness = this->ThinSheetThickness;
-      const double* b = prop->GetBounds();
-      if (!(thickness > 0.0) && b && b[0] <= b[1])
-      {
-        thickness = 0.01 *
-          std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
-            (b[5] - b[4]) * (b[5] - b[4]));
-      }
-      thickness = thickness > 0.0 ? thickness : 1e-3;
-      if (model == SURFACE_AUTO)
-      {
-        sheets.push_back(prop);
-      }
-    }
-    materialSheet.push_back(static_cast<float>(thickness));
-  }
-  // Say once which props were taken for thin sheets (until the set changes).
-  if (!sheets.empty() && sheets != this->ThinSheetsReported)
-  {
-    std::ostringstream names;
-    for (vtkProp* prop : sheets)
-    {
-      names << " " << prop->GetClassName() << " " << prop;
-    }
-    vtkWarningMacro("Glass prop(s)" << names.str()
-                                    << " have open surfaces (boundary edges): drawn as thin sheets "
-                                       "(vtkRefractionPass::SetSurfaceModel to choose).");
-  }
-  this->ThinSheetsReported = sheets;
+  const std::vector<float>& materialIOR = this->Materials->GetIndexOfRefraction();
+  const std::vector<float>& materialSheet = this->Materials->GetSheetThickness();
   if (static_cast<int>(glass.size()) > vtkRefractionShadeStage::MaximumMaterials)
   {
     vtkWarningMacro(<< glass.size() << " glass props: the last "

@@ -46,6 +46,7 @@ class vtkProp;
 class vtkRefractionDepthRange;
 class vtkRefractionGeometryStage;
 class vtkRefractionGlassChecker;
+class vtkRefractionMaterials;
 class vtkRefractionMethod;
 class vtkRefractionOpaqueStep;
 class vtkRefractionShadeStage;
@@ -357,7 +358,6 @@ protected:
   bool DataColour = true;
   double AbsorptionDistance = 0.0;
   double ThinSheetThickness = 0.0;
-  std::vector<vtkProp*> ThinSheetsReported;
   int NumberOfGlassProps = 0;
 
   vtkNew<vtkRefractionGlassChecker> GlassChecker;
@@ -365,6 +365,7 @@ protected:
   vtkNew<vtkRefractionGeometryStage> GeometryStage;
   vtkNew<vtkRefractionDepthRange> DepthRange;
   vtkNew<vtkRefractionShadeStage> ShadeStage;
+  vtkNew<vtkRefractionMaterials> Materials;
   vtkSmartPointer<vtkRefractionMethod> MethodObject;
   int MethodObjectType = -1;
   std::unique_ptr<vtkOpenGLRenderTimer> Timers[TIMED_STAGE_COUNT];

@@ -1,0 +1,122 @@
+#include "vtkRefractionMaterials.h"
+
+#include "vtkActor.h"
+#include "vtkCellData.h"
+#include "vtkDataSet.h"
+#include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
+#include "vtkMapper.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkProperty.h"
+#include "vtkRefractionGeometryStage.h"
+#include "vtkRefractionPass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(vtkRefractionMaterials);
+
+namespace
+{
+// Whether a glass prop's pixels can be anything but white: a colour, scalar colours, edges.
+bool HasDataColour(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  if (!actor)
+  {
+    return false;
+  }
+  vtkProperty* property = actor->GetProperty();
+  double colour[3];
+  property->GetDiffuseColor(colour);
+  if (property->GetEdgeVisibility() || colour[0] < 1.0 || colour[1] < 1.0 || colour[2] < 1.0 ||
+    property->GetDiffuse() < 1.0 || property->GetAmbient() > 0.0)
+  {
+    return true;
+  }
+  vtkMapper* mapper = actor->GetMapper();
+  vtkDataSet* data = mapper ? vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
+  return mapper && data && mapper->GetScalarVisibility() &&
+    (data->GetPointData()->GetScalars() || data->GetCellData()->GetScalars() ||
+      (mapper->GetArrayName() && mapper->GetArrayName()[0] != 0));
+}
+
+// The diagonal of a prop's bounding box (0 without bounds).
+double Diagonal(vtkProp* prop)
+{
+  const double* b = prop->GetBounds();
+  if (!b || !(b[0] <= b[1]))
+  {
+    return 0.0;
+  }
+  return std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
+    (b[5] - b[4]) * (b[5] - b[4]));
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionMaterials::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Materials: " << this->IOR.size() << "\n";
+  os << indent << "DataColour: " << this->DataColour << "\n";
+  os << indent << "AbsorptionDistance: " << this->AbsorptionDistance << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
+  vtkRefractionGeometryStage* surfaces, bool dataColour, double absorptionDistance,
+  double thinSheetThickness)
+{
+  this->IOR.clear();
+  this->Sheet.clear();
+  this->DataColour = false;
+  std::vector<vtkProp*> sheets;
+  double largest = 0.0;
+  for (vtkProp* prop : glass)
+  {
+    this->IOR.push_back(static_cast<float>(vtkRefractionPass::GetIndexOfRefraction(prop)));
+    vtkInformation* keys = prop->GetPropertyKeys();
+    const int model = keys && keys->Has(vtkRefractionPass::SURFACE_MODEL())
+      ? keys->Get(vtkRefractionPass::SURFACE_MODEL())
+      : vtkRefractionPass::SURFACE_AUTO;
+    const bool sheet = model == vtkRefractionPass::SURFACE_THIN_SHEET ||
+      (model == vtkRefractionPass::SURFACE_AUTO && surfaces->HasBoundary(prop));
+    const double diagonal = Diagonal(prop);
+    largest = std::max(largest, diagonal);
+    double thickness = 0.0;
+    if (sheet)
+    {
+      thickness = thinSheetThickness > 0.0 ? thinSheetThickness : 0.01 * diagonal;
+      thickness = thickness > 0.0 ? thickness : 1e-3;
+      if (model == vtkRefractionPass::SURFACE_AUTO)
+      {
+        sheets.push_back(prop);
+      }
+    }
+    this->Sheet.push_back(static_cast<float>(thickness));
+    this->DataColour = this->DataColour || (dataColour && HasDataColour(prop));
+  }
+  // The tint: light keeps the data's colour after this distance inside the glass.
+  this->AbsorptionDistance = 0.0;
+  if (this->DataColour)
+  {
+    this->AbsorptionDistance = absorptionDistance > 0.0 ? absorptionDistance : 0.5 * largest;
+    this->AbsorptionDistance = this->AbsorptionDistance > 0.0 ? this->AbsorptionDistance : 1.0;
+  }
+  // Say once which props were taken for thin sheets (until the set changes).
+  if (!sheets.empty() && sheets != this->SheetsReported)
+  {
+    std::ostringstream names;
+    for (vtkProp* prop : sheets)
+    {
+      names << " " << prop->GetClassName() << " " << prop;
+    }
+    vtkWarningMacro("Glass prop(s)" << names.str()
+                                    << " have open surfaces (boundary edges): drawn as thin "
+                                       "sheets (vtkRefractionPass::SetSurfaceModel to choose).");
+  }
+  this->SheetsReported = sheets;
+}

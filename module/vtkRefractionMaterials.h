@@ -1,0 +1,58 @@
+/**
+ * @class   vtkRefractionMaterials
+ * @brief   The glass props' materials of one frame: index of refraction, surface model, colour.
+ *
+ * Per glass prop (its position is its material index in the G-buffer): the index of
+ * refraction, the thin-sheet thickness (0 for a solid; open surfaces become sheets unless the
+ * prop's SURFACE_MODEL key says otherwise, and the props taken for sheets are named once in a
+ * warning), and whether any prop has a colour of its own (actor colour, scalar colours,
+ * edges), with the absorption distance of the tint.
+ */
+#ifndef vtkRefractionMaterials_h
+#define vtkRefractionMaterials_h
+
+#include "vtkObject.h"
+
+#include <vector> // For members
+
+class vtkProp;
+class vtkRefractionGeometryStage;
+
+class vtkRefractionMaterials : public vtkObject
+{
+public:
+  static vtkRefractionMaterials* New();
+  vtkTypeMacro(vtkRefractionMaterials, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The materials of `glass`. `surfaces` answers which props are open; `dataColour` whether
+   * the method may tint at all; `absorptionDistance` and `thinSheetThickness` are the pass's
+   * settings (0: automatic from the props' bounds).
+   */
+  void Update(const std::vector<vtkProp*>& glass, vtkRefractionGeometryStage* surfaces,
+    bool dataColour, double absorptionDistance, double thinSheetThickness);
+
+  const std::vector<float>& GetIndexOfRefraction() const { return this->IOR; }
+  const std::vector<float>& GetSheetThickness() const { return this->Sheet; }
+  /// Whether a glass prop has a colour of its own (then the G-buffer keeps the data colour).
+  bool GetDataColour() const { return this->DataColour; }
+  /// The tint's absorption distance (0 without data colour).
+  double GetAbsorptionDistance() const { return this->AbsorptionDistance; }
+
+protected:
+  vtkRefractionMaterials() = default;
+  ~vtkRefractionMaterials() override = default;
+
+private:
+  vtkRefractionMaterials(const vtkRefractionMaterials&) = delete;
+  void operator=(const vtkRefractionMaterials&) = delete;
+
+  std::vector<float> IOR;
+  std::vector<float> Sheet;
+  bool DataColour = false;
+  double AbsorptionDistance = 0.0;
+  std::vector<vtkProp*> SheetsReported;
+};
+
+#endif

@@ -824,10 +824,14 @@ void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
        "N x N rays per pixel (the anti-aliased truth a camera sees). `TIR` / `rest`: PSNR "
        "against `full SS` on the pixels where the two-interface reference's ray is totally "
        "reflected at the exit, and on the others (`-`: none). Stage times are the pass's GL "
-       "timer queries, stage k = vtkRefractionPass's TIMED_* enumerator k (today 0 back "
-       "capture, 1 depth range, 2 front/shading); on llvmpipe they include work queued before "
-       "the stage; -1 marks a stage the method does not run. `B/px` is "
-       "vtkRefractionPass::GetTextureBytes() over the pixels.\n\n";
+       "timer queries, stage k = vtkRefractionPass's TIMED_* enumerator k (";
+  for (int stage = 0; stage < vtkRefractionPass::TIMED_STAGE_COUNT; ++stage)
+  {
+    f << (stage ? ", " : "") << stage << " " << vtkRefractionPass::GetStageName(stage);
+  }
+  f << "); on llvmpipe they include work queued before "
+        "the stage; -1 marks a stage the method does not run. `B/px` is "
+        "vtkRefractionPass::GetTextureBytes() over the pixels.\n\n";
   // Table 1 of the paper: fps per model at 512x512 (or the size nearest it).
   std::map<std::string, std::map<std::string, const Row*>> table;
   int tableSize = 0;

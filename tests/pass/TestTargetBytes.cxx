@@ -8,6 +8,7 @@
 // reduction chain RG32F = 8 per texel of each halved level; the debug output 2 x RGBA32F.
 #include "vtkRefractionPass.h"
 
+#include "rfTestWindow.h"
 #include "rf_require.h"
 
 #include <vtkActor.h>
@@ -52,10 +53,8 @@ int main()
   vtkNew<vtkRefractionPass> pass;
   renderer->SetPass(pass);
   RF_REQUIRE(vtkRefractionPass::MakeGlass(actor, 1.5), "MakeGlass refused IOR 1.5");
-  vtkNew<vtkRenderWindow> window;
+  vtkSmartPointer<vtkRenderWindow> window = rftest::NewRenderWindow(width, height);
   window->SetSize(width, height);
-  window->SetMultiSamples(0);
-  window->SetOffScreenRendering(1);
   window->AddRenderer(renderer);
 
   struct Case

@@ -317,6 +317,12 @@ int BuildPipeline(const rfViewerOptions& o, const rfViewerSettings& s, Scene& sc
   scene.Glass = vtkSmartPointer<vtkActor>::New();
   scene.Glass->SetMapper(mapper);
   vtkRefractionPass::MakeGlass(scene.Glass, s.IOR);
+  if (!o.Demo.empty() || !s.ContourValues.empty())
+  {
+    // A contour bounds a solid region of the field: where the sampling box cuts it, it has
+    // boundary edges, but it is still the surface of a solid, not a thin sheet.
+    vtkRefractionPass::SetSurfaceModel(scene.Glass, vtkRefractionPass::SURFACE_SOLID);
+  }
   return RF_VIEWER_OK;
 }
 

@@ -121,8 +121,8 @@ void vtkRefractionGeometryStage::DrawProps(vtkOpenGLRenderer* ren, int stage)
   state.SetPropArrayAndCount(this->Glass.data(), static_cast<int>(this->Glass.size()));
   vtkOpenGLState* ostate = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
   vtkOpenGLState::ScopedglEnableDisable cullSaver(ostate, GL_CULL_FACE);
-  GLint cullMode = GL_BACK;
-  glGetIntegerv(GL_CULL_FACE_MODE, &cullMode);
+  int cullMode = GL_BACK;
+  ostate->vtkglGetIntegerv(GL_CULL_FACE_MODE, &cullMode);
   this->PreRender(&state);
   this->Stage = stage;
   this->State = ostate;

@@ -28,7 +28,7 @@ vtkStandardNewMacro(vtkRefractionShadeStage);
 
 struct vtkRefractionShadeStage::Program
 {
-  std::string Source;
+  std::string Defines;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
 };
 
@@ -111,35 +111,30 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
   {
     defines << "#define RF_DEBUG_OUTPUT\n";
   }
+  // The defines name the method and every variant, so they are the program's key: the source
+  // (the kernel and the stage, tens of kilobytes) is put together only when they change, not
+  // every frame.
+  Program& program = *this->GetProgram(debug);
+  if (program.Quad && program.Defines == defines.str())
+  {
+    return true;
+  }
   std::string source = rfShadeFSSource;
   vtkShaderProgram::Substitute(source, "in vec2 texCoord;", "in vec2 texCoord;\n" + defines.str());
   vtkShaderProgram::Substitute(
     source, "//RF::Common", std::string(rfKernelSource) + rfCommonSource);
   vtkShaderProgram::Substitute(source, "//RF::Environment", rfEnvironmentSource);
   vtkShaderProgram::Substitute(source, "//RF::Method", method->GetShaderSource());
-  return this->Build(ren, *this->GetProgram(debug), source);
-}
-
-//------------------------------------------------------------------------------
-bool vtkRefractionShadeStage::Build(vtkOpenGLRenderer* ren, Program& program, const std::string& source)
-{
+  // VTK's shader cache finds a program it built before by its source.
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  if (program.Quad && program.Source == source)
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(program.Quad->Program);
-  }
-  else
-  {
-    // A new define set: VTK's shader cache finds programs it built before by their source.
-    program.Quad.reset(new vtkOpenGLQuadHelper(renWin,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str(), ""));
-    program.Source = source;
-  }
+  program.Quad.reset(new vtkOpenGLQuadHelper(renWin,
+    vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str(), ""));
+  program.Defines = defines.str();
   if (!program.Quad->Program || !program.Quad->Program->GetCompiled())
   {
     vtkErrorMacro("Could not build the refraction shading program; the glass is not drawn.");
     program.Quad.reset();
-    program.Source.clear();
+    program.Defines.clear();
     return false;
   }
   return true;

@@ -81,7 +81,6 @@ private:
 
   struct Program;
   Program* GetProgram(bool debug);
-  bool Build(vtkOpenGLRenderer* ren, Program& program, const std::string& source);
   void Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, vtkRefractionPass* settings,
     vtkRefractionTargets* targets, const Frame& frame, const std::vector<float>& materialIOR,
     const std::vector<float>& materialSheet, bool debug);

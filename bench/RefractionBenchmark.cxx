@@ -25,6 +25,7 @@
 #include <vtkChartLegend.h>
 #include <vtkChartMatrix.h>
 #include <vtkChartXY.h>
+#include <vtkCleanPolyData.h>
 #include <vtkCommand.h>
 #include <vtkContextScene.h>
 #include <vtkContextView.h>
@@ -321,8 +322,16 @@ vtkSmartPointer<vtkAlgorithm> MakeMesh(const std::string& name, const Options& o
     fn->SetParametricFunction(torus);
     fn->SetUResolution(o.Smoke ? 64 : 192);
     fn->SetVResolution(o.Smoke ? 32 : 96);
+    // The parametric source repeats its seam's points (u = 0 and 2 pi, 1e-15 apart) and
+    // joins them with triangles of no area; vtkPolyDataNormals' consistency walk then turns
+    // some triangles over, and the pass (rightly) draws a mesh wound inconsistently without
+    // face culling. Merging the seam first, as one would for any analysis, gives a closed,
+    // consistently wound torus.
+    auto clean = vtkSmartPointer<vtkCleanPolyData>::New();
+    clean->SetInputConnection(fn->GetOutputPort());
+    clean->SetTolerance(1e-6);
     auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();
-    normals->SetInputConnection(fn->GetOutputPort());
+    normals->SetInputConnection(clean->GetOutputPort());
     source = normals;
   }
   else if (name == "isosurface")

@@ -4,6 +4,12 @@
 // sees as wrong) and the full reference supersampled N x N per pixel (the anti-aliased
 // truth a camera sees). Writes results.csv, results.md and pareto.png into --out.
 //
+// The "scene" mesh is the glass sphere in the user's scene: in front of a checkerboard plane
+// and three coloured axes, over a gradient background (the pass's renderer environment). Its
+// rows are DIR 5 with the refraction of that scene (NG, Wyman 2005) on and off, against
+// references that trace the opaque actors too, timed against the plain VTK render of the
+// same scene (the sphere drawn opaque, the plane and the axes).
+//
 // Timing that can be believed: each row (one setting on one mesh at one size) is timed
 // together with its own plain render right after it, every row is repeated (--repeats, at
 // least 3) and all repeats run in one shuffled order (--seed), so slow phases of the machine
@@ -24,6 +30,7 @@
 #include <vtkCamera.h>
 #include <vtkChartLegend.h>
 #include <vtkChartMatrix.h>
+#include <vtkCellData.h>
 #include <vtkChartXY.h>
 #include <vtkCleanPolyData.h>
 #include <vtkCommand.h>
@@ -35,6 +42,8 @@
 #include <vtkHDRReader.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
+#include <vtkLineSource.h>
+#include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkOpenGLRenderTimer.h>
@@ -42,17 +51,20 @@
 #include <vtkParametricFunctionSource.h>
 #include <vtkParametricTorus.h>
 #include <vtkPNGWriter.h>
+#include <vtkPlaneSource.h>
 #include <vtkPlot.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkPolyDataNormals.h>
+#include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRendererCollection.h>
 #include <vtkRenderer.h>
 #include <vtkSphereSource.h>
 #include <vtkTable.h>
 #include <vtkTimerLog.h>
+#include <vtkTubeFilter.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkVector.h>
 #include <vtkWindowToImageFilter.h>
@@ -103,6 +115,7 @@ struct Setting
   bool Adaptive = false;
   bool Nearest = false;
   bool Paper = false; // the paper's search exactly: no secant refinement
+  bool NoScene = false; // SetSceneRefraction(false): the opaque scene is not refracted (NG off)
   std::string Label() const
   {
     std::ostringstream s;
@@ -112,6 +125,7 @@ struct Setting
       s << (Adaptive ? " adaptive<=" : " ") << Steps << (Bounds ? " bbox" : "")
         << (Nearest ? " nearest" : "") << (Paper ? " paper" : "");
     }
+    s << (NoScene ? " NG off" : "");
     return s.str();
   }
 };
@@ -185,7 +199,9 @@ bool Parse(int argc, char* argv[], Options& o)
   args.AddArgument("--sizes", Args::SPACE_ARGUMENT, &sizes,
     "Window sizes in pixels, comma-separated, 8..4096 (default 256,512,1024).");
   args.AddArgument("--meshes", Args::SPACE_ARGUMENT, &meshes,
-    "Meshes, comma-separated: sphere, torus, isosurface, bunny (default all four).");
+    "Meshes, comma-separated: sphere, torus, isosurface, bunny (default all four), and scene "
+    "(the sphere in front of a checkerboard and axes over a gradient background: DIR 5 with "
+    "the scene's refraction on and off).");
   args.AddArgument("--frames", Args::SPACE_ARGUMENT, &frames,
     "Timed frames per repeat of a row, after 5 warm-up frames (default 30).");
   args.AddArgument("--repeats", Args::SPACE_ARGUMENT, &repeats,
@@ -252,7 +268,8 @@ bool Parse(int argc, char* argv[], Options& o)
     o.Meshes = Split(meshes);
     for (const auto& name : o.Meshes)
     {
-      if (name != "sphere" && name != "torus" && name != "isosurface" && name != "bunny")
+      if (name != "sphere" && name != "torus" && name != "isosurface" && name != "bunny" &&
+        name != "scene")
       {
         std::fprintf(stderr, "--meshes: unknown mesh '%s'\n", name.c_str());
         return false;
@@ -306,7 +323,7 @@ std::string HostKind(const std::string& renderer)
 vtkSmartPointer<vtkAlgorithm> MakeMesh(const std::string& name, const Options& o)
 {
   vtkSmartPointer<vtkAlgorithm> source;
-  if (name == "sphere")
+  if (name == "sphere" || name == "scene")
   {
     auto sphere = vtkSmartPointer<vtkSphereSource>::New();
     sphere->SetThetaResolution(o.Smoke ? 48 : 160);
@@ -370,6 +387,71 @@ vtkSmartPointer<vtkAlgorithm> MakeMesh(const std::string& name, const Options& o
   distances->SetInputConnection(source->GetOutputPort());
   distances->Update();
   return distances;
+}
+
+// The scene mesh's surroundings (the glass sphere has radius 0.5 at the origin): a checkerboard
+// of 8 x 8 unlit squares (cell scalars 0 / 1 through a two-colour lookup table) well behind
+// it, beyond the ball lens's focal length so that it shows the board upside down, and three
+// lit axes (red x, green y, blue z) between them, as tubes: vtkAxesActor is an assembly, which
+// the reference does not trace.
+std::vector<vtkSmartPointer<vtkActor>> MakeSurroundings()
+{
+  std::vector<vtkSmartPointer<vtkActor>> actors;
+  const double z = -2.0;
+  const double half = 1.25;
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(-half, -half, z);
+  plane->SetPoint1(half, -half, z);
+  plane->SetPoint2(-half, half, z);
+  plane->SetResolution(8, 8);
+  plane->Update();
+  vtkNew<vtkPolyData> board;
+  board->DeepCopy(plane->GetOutput());
+  vtkNew<vtkFloatArray> parity;
+  parity->SetNumberOfTuples(board->GetNumberOfCells());
+  for (vtkIdType k = 0; k < board->GetNumberOfCells(); ++k)
+  {
+    parity->SetValue(k, static_cast<float>((k % 8 + k / 8) % 2)); // cells run along x first
+  }
+  board->GetCellData()->SetScalars(parity);
+  vtkNew<vtkLookupTable> table;
+  table->SetNumberOfTableValues(2);
+  table->SetTableValue(0, 0.95, 0.85, 0.3, 1.0);
+  table->SetTableValue(1, 0.15, 0.1, 0.35, 1.0);
+  table->SetTableRange(0.0, 1.0);
+  vtkNew<vtkPolyDataMapper> boardMapper;
+  boardMapper->SetInputData(board);
+  boardMapper->SetLookupTable(table);
+  boardMapper->SetScalarRange(0.0, 1.0);
+  boardMapper->SetScalarModeToUseCellData();
+  auto boardActor = vtkSmartPointer<vtkActor>::New();
+  boardActor->SetMapper(boardMapper);
+  boardActor->GetProperty()->SetAmbient(1.0);
+  boardActor->GetProperty()->SetDiffuse(0.0);
+  actors.push_back(boardActor);
+  const double origin[3] = { 0.15, -0.1, -1.25 };
+  const double axisLength[3] = { 0.75, 0.75, 0.6 };
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    double end[3] = { origin[0], origin[1], origin[2] };
+    end[axis] += axisLength[axis];
+    vtkNew<vtkLineSource> line;
+    line->SetPoint1(origin);
+    line->SetPoint2(end);
+    vtkNew<vtkTubeFilter> tube;
+    tube->SetInputConnection(line->GetOutputPort());
+    tube->SetRadius(0.04);
+    tube->SetNumberOfSides(24);
+    tube->CappingOn();
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(tube->GetOutputPort());
+    mapper->ScalarVisibilityOff();
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetColor(axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0);
+    actors.push_back(actor);
+  }
+  return actors;
 }
 
 // The window's colour as floats in [0,1], bottom row first (as the reference).
@@ -537,11 +619,12 @@ void ShowProgress(vtkObject*, unsigned long, void* client, void* call)
   std::fflush(stdout);
 }
 
-bool Trace(vtkRenderer* renderer, int size, int mode, int samples, const std::string& label,
-  Reference& out)
+bool Trace(vtkRenderer* renderer, vtkRefractionPass* pass, int size, int mode, int samples,
+  const std::string& label, Reference& out)
 {
   vtkNew<vtkRefractionReference> reference;
   reference->SetMode(mode);
+  reference->SetEnvironmentMode(pass->GetEnvironmentMode()); // the pass's environment
   reference->SetThreads(2);
   reference->SetSamplesPerSide(samples);
   ProgressLine line{ label };
@@ -708,6 +791,9 @@ std::vector<Column> Columns(int stageCount)
     [](Row& r, const std::string& v) { r.Config.Nearest = v == "nearest"; });
   c.push_back({ "secant", [](const Row& r) { return std::string(r.Config.Paper ? "0" : "1"); },
     [](Row& r, const std::string& v) { r.Config.Paper = v == "0"; } });
+  c.push_back({ "scene_refraction",
+    [](const Row& r) { return std::string(r.Config.NoScene ? "0" : "1"); },
+    [](Row& r, const std::string& v) { r.Config.NoScene = v == "0"; } });
   c.push_back({ "repeats", [](const Row& r) { return std::to_string(r.Repeats); },
     [](Row& r, const std::string& v) { r.Repeats = std::atoi(v.c_str()); } });
   number("cpu_ms", [](Row& r) -> double& { return r.CpuMs.Median; });
@@ -874,7 +960,7 @@ void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
        "RT (full) | RT (full, SS) |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& r : rows)
   {
-    if (r.Size != tableSize || r.Config.Method == "none")
+    if (r.Size != tableSize || r.Config.Method == "none" || r.Config.NoScene)
       continue;
     if (r.Config.Method == "DIR" && (r.Config.Steps != 5 || r.Config.Bounds ||
                                       r.Config.Adaptive || r.Config.Nearest || r.Config.Paper))
@@ -999,7 +1085,8 @@ void WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
       std::vector<std::pair<double, double>> points;
       for (const Row& r : rows)
       {
-        if (r.Mesh != meshes[m] || r.Size != plotSize || r.Config.Method == "none")
+        if (r.Mesh != meshes[m] || r.Size != plotSize || r.Config.Method == "none" ||
+          r.Config.NoScene)
           continue;
         const std::string& method = r.Config.Method;
         const int f = method == "SIR" ? 0
@@ -1180,6 +1267,15 @@ std::vector<Setting> Settings(const Options& o)
   return settings;
 }
 
+// The scene mesh's rows: DIR 5 refracting the opaque scene (NG) and the same without it.
+std::vector<Setting> SceneSettings()
+{
+  Setting on{ "DIR", 5 };
+  Setting off = on;
+  off.NoScene = true;
+  return { on, off };
+}
+
 int MethodId(const std::string& m)
 {
   return m == "SIR" ? vtkRefractionPass::SIR
@@ -1197,28 +1293,44 @@ void Apply(vtkRefractionPass* pass, const Setting& setting)
   pass->SetBackSurface(setting.Nearest ? vtkRefractionPass::BACK_SURFACE_NEAREST
                                        : vtkRefractionPass::BACK_SURFACE_FURTHEST);
   pass->SetSecantRefinement(!setting.Paper);
+  pass->SetSceneRefraction(!setting.NoScene);
 }
 
-// One mesh in the scene: its actor and what the rows report about it.
+// One mesh in the scene: its actor, the opaque actors around it, and what the rows report.
 struct Scene
 {
   std::string Name;
   vtkSmartPointer<vtkAlgorithm> Mesh;
   vtkSmartPointer<vtkActor> Actor;
+  std::vector<vtkSmartPointer<vtkActor>> Surroundings; // the scene mesh's plane and axes
   vtkIdType Triangles = 0;
 };
 
-// Puts the scene's actor alone in the renderer with the benchmark's camera, at a size.
-void Show(vtkRenderWindow* window, vtkRenderer* renderer, const Scene& scene, int size)
+// Puts the scene's actor (with its surroundings, if any) in the renderer with the
+// benchmark's camera framing the actor, at a size. The four meshes are alone over a black
+// background and the pass's built-in environment; the scene mesh has a gradient background,
+// which the pass shows as its environment (ENVIRONMENT_RENDERER).
+void Show(vtkRenderWindow* window, vtkRenderer* renderer, vtkRefractionPass* pass,
+  const Scene& scene, int size)
 {
   renderer->RemoveAllViewProps();
   renderer->AddActor(scene.Actor);
+  for (vtkActor* actor : scene.Surroundings)
+  {
+    renderer->AddActor(actor);
+  }
+  const bool surroundings = !scene.Surroundings.empty();
+  renderer->SetGradientBackground(surroundings);
+  renderer->SetBackground(surroundings ? 0.1 : 0.0, surroundings ? 0.15 : 0.0, surroundings ? 0.3 : 0.0);
+  renderer->SetBackground2(0.85, 0.85, 0.9);
+  pass->SetEnvironmentMode(surroundings ? vtkRefractionPass::ENVIRONMENT_RENDERER
+                                        : vtkRefractionPass::ENVIRONMENT_BUILTIN);
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetPosition(0.0, 0.0, 1.0);
   camera->SetFocalPoint(0.0, 0.0, 0.0);
   camera->SetViewUp(0.0, 1.0, 0.0);
   camera->SetViewAngle(30.0);
-  renderer->ResetCamera();
+  renderer->ResetCamera(scene.Actor->GetBounds()); // the glass, not its surroundings
   camera->Elevation(15.0);
   camera->OrthogonalizeViewUp();
   camera->Dolly(1.25);
@@ -1337,6 +1449,10 @@ int main(int argc, char* argv[])
     mapper->ScalarVisibilityOff();
     scene.Actor = vtkSmartPointer<vtkActor>::New();
     scene.Actor->SetMapper(mapper);
+    if (name == "scene")
+    {
+      scene.Surroundings = MakeSurroundings();
+    }
     scenes.push_back(scene);
   }
   if (scenes.empty())
@@ -1349,7 +1465,10 @@ int main(int argc, char* argv[])
   // first frame that uses it, and the plain render does not sample it.
   renderer->SetEnvironmentTexture(environment);
   vtkNew<vtkRefractionPass> pass;
-  pass->SetEnvironmentModeToBuiltin(); // what the reference traces without a cube map
+  // Show() sets the environment per mesh: built-in for the four meshes (what their figures
+  // have always been measured over), the renderer's background for the scene mesh; each
+  // reference follows the pass.
+  pass->SetEnvironmentModeToBuiltin();
   const std::vector<Setting> settings = Settings(options);
   const int ss = options.Supersample;
 
@@ -1360,26 +1479,26 @@ int main(int argc, char* argv[])
   {
     for (int size : options.Sizes)
     {
-      Show(window, renderer, scene, size);
+      Show(window, renderer, pass, scene, size);
       renderer->SetPass(pass);
       vtkRefractionPass::MakeGlass(scene.Actor, 1.5);
       window->Render();
       Truth truth;
       const std::string where = scene.Name + " " + std::to_string(size) + " ";
       const std::string ssLabel = " " + std::to_string(ss) + "x" + std::to_string(ss);
-      if (!Trace(renderer, size, vtkRefractionReference::TWO_INTERFACE, 1, where + "two",
+      if (!Trace(renderer, pass, size, vtkRefractionReference::TWO_INTERFACE, 1, where + "two",
             truth.Two) ||
-        !Trace(renderer, size, vtkRefractionReference::FULL, 1, where + "full", truth.Full) ||
-        !Trace(renderer, size, vtkRefractionReference::TWO_INTERFACE, ss,
+        !Trace(renderer, pass, size, vtkRefractionReference::FULL, 1, where + "full", truth.Full) ||
+        !Trace(renderer, pass, size, vtkRefractionReference::TWO_INTERFACE, ss,
           where + "two" + ssLabel, truth.TwoSS) ||
-        !Trace(renderer, size, vtkRefractionReference::FULL, ss, where + "full" + ssLabel,
+        !Trace(renderer, pass, size, vtkRefractionReference::FULL, ss, where + "full" + ssLabel,
           truth.FullSS))
       {
         std::fprintf(stderr, "%s: the reference could not trace the scene; skipped\n",
           scene.Name.c_str());
         continue;
       }
-      for (const Setting& setting : settings)
+      for (const Setting& setting : scene.Surroundings.empty() ? settings : SceneSettings())
       {
         Row row;
         row.Mesh = scene.Name;
@@ -1454,7 +1573,7 @@ int main(int argc, char* argv[])
   {
     Row& row = rows[jobs[j].first];
     const Scene& scene = *byName[row.Mesh];
-    Show(window, renderer, scene, row.Size);
+    Show(window, renderer, pass, scene, row.Size);
     renderer->SetPass(pass);
     if (row.Config.Method == "none")
     {

@@ -255,3 +255,43 @@ rf_status rf_environment_cube_from_latlong(
   }
   return RF_OK;
 }
+
+void rf_background_environment_lookup(
+  const double direction_world[3], double rgb[3], void* background)
+{
+  const rf_background_environment* b = (const rf_background_environment*)background;
+  double d[3];
+  double clip_y = 0.0;
+  double clip_w = 0.0;
+  double up;
+  int r;
+  int c;
+  for (r = 0; r < 3; ++r)
+  {
+    d[r] = b->world_to_view[3 * r + 0] * direction_world[0] +
+      b->world_to_view[3 * r + 1] * direction_world[1] +
+      b->world_to_view[3 * r + 2] * direction_world[2];
+  }
+  for (c = 0; c < 3; ++c)
+  {
+    clip_y += b->projection[4 + c] * d[c];
+    clip_w += b->projection[12 + c] * d[c];
+  }
+  if (clip_w > 1e-6 * sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]))
+  {
+    up = 0.5 + 0.5 * clip_y / clip_w;
+  }
+  else
+  {
+    up = d[1] >= 0.0 ? 1.0 : 0.0;
+  }
+  if (!isfinite(up))
+  {
+    up = 0.0;
+  }
+  up = fmin(fmax(up, 0.0), 1.0);
+  for (c = 0; c < 3; ++c)
+  {
+    rgb[c] = b->bottom[c] + (b->top[c] - b->bottom[c]) * up;
+  }
+}

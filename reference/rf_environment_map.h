@@ -67,6 +67,29 @@ RF_REFERENCE_EXPORT void rf_environment_map_lookup(
 RF_REFERENCE_EXPORT rf_status rf_environment_cube_from_latlong(
   const rf_environment_map* latlong, int side, float* const faces[6]);
 
+/* The renderer's background as the environment, as the pass's shader computes it without a
+ * cube map in vtkRefractionPass::ENVIRONMENT_RENDERER (shaders/rfEnvironment.glsl,
+ * RF_ENV_BACKGROUND): the colour the screen shows in a direction. The view-space direction d
+ * is projected as a point at infinity, c = projection (d, 0); where it lies in front of the
+ * camera (c.w > 1e-6 |d|) its height on the screen is up = 0.5 + 0.5 c.y / c.w, else
+ * (behind, or any direction under a parallel projection) up = 1 for d.y >= 0 and 0 below;
+ * the colour is bottom + (top - bottom) clamp(up, 0, 1). A solid background has top = bottom.
+ * VTK's gradient runs from Background at the bottom of the viewport to Background2 at the
+ * top. */
+typedef struct rf_background_environment
+{
+  double world_to_view[9]; /* the view's rotation, row-major (vtkCamera's view matrix) */
+  double projection[16];   /* view -> clip, row-major, as rf_camera.projection */
+  double bottom[3];        /* the renderer's Background */
+  double top[3];           /* Background2 with GradientBackground on, else Background */
+} rf_background_environment;
+
+/* rf_environment_fn for rf_trace_options.environment, with an rf_background_environment as
+ * user data. As in the shader, a zero direction gives the top colour; a non-finite one the
+ * bottom colour. */
+RF_REFERENCE_EXPORT void rf_background_environment_lookup(
+  const double direction_world[3], double rgb[3], void* background);
+
 #ifdef __cplusplus
 }
 #endif

@@ -127,14 +127,21 @@ static rf_vec3 rf_mat4_direction(const double m[16], rf_vec3 d)
 typedef struct rf_tracer
 {
   RTCDevice device;
-  RTCScene scene;
+  RTCScene scene;        /* the glass; geometry k is meshes[k] */
+  RTCScene opaque_scene; /* the opaque surfaces (NULL when there are none); geometry k is
+                            opaque[k] */
   const rf_mesh* meshes;
   size_t mesh_count;
+  const rf_opaque_mesh* opaque;
+  size_t opaque_count;
   const rf_trace_options* options;
   double epsilon; /* ray offset for secondary rays, scaled with the scene */
   double clip_to_view[16];
   double view_to_world[16];
   double world_to_view[16];
+  int parallel;          /* parallel projection: the viewer is along +z of the view */
+  rf_vec3 eye_world;     /* perspective: the camera position */
+  rf_vec3 view_z_world;  /* the view axis toward the viewer, in WORLD space */
   rf_trace_image* out;
 } rf_tracer;
 
@@ -158,7 +165,7 @@ static void rf_embree_error(void* user, enum RTCError code, const char* message)
  * the ray starts from is skipped: a ray leaving a flat triangle cannot meet it again, so
  * such a hit is rounding, and stepping tnear past it is more robust than a larger epsilon
  * (which would skip genuine hits in thin parts). */
-static int rf_intersect(const rf_tracer* tr, rf_vec3 o, rf_vec3 d, double tnear, double tfar,
+static int rf_intersect_in(RTCScene scene, rf_vec3 o, rf_vec3 d, double tnear, double tfar,
   unsigned skip_geom, unsigned skip_prim, rf_hit* hit)
 {
   int attempt;
@@ -181,7 +188,7 @@ static int rf_intersect(const rf_tracer* tr, rf_vec3 o, rf_vec3 d, double tnear,
     rh.ray.flags = 0;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(tr->scene, &context, &rh);
+    rtcIntersect1(scene, &context, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
     {
       return 0;
@@ -202,6 +209,22 @@ static int rf_intersect(const rf_tracer* tr, rf_vec3 o, rf_vec3 d, double tnear,
   return 0;
 }
 
+/* The nearest glass surface. */
+static int rf_intersect(const rf_tracer* tr, rf_vec3 o, rf_vec3 d, double tnear, double tfar,
+  unsigned skip_geom, unsigned skip_prim, rf_hit* hit)
+{
+  return rf_intersect_in(tr->scene, o, d, tnear, tfar, skip_geom, skip_prim, hit);
+}
+
+/* The nearest opaque surface (none when the scene has no opaque mesh). */
+static int rf_intersect_opaque(
+  const rf_tracer* tr, rf_vec3 o, rf_vec3 d, double tnear, double tfar, rf_hit* hit)
+{
+  return tr->opaque_scene != NULL &&
+    rf_intersect_in(tr->opaque_scene, o, d, tnear, tfar, RTC_INVALID_GEOMETRY_ID,
+      RTC_INVALID_GEOMETRY_ID, hit);
+}
+
 static rf_vec3 rf_mesh_vector(const float* xyz, unsigned index)
 {
   const float* p = xyz + 3 * (size_t)index;
@@ -212,29 +235,109 @@ static rf_vec3 rf_mesh_vector(const float* xyz, unsigned index)
  * (Embree's u, v: hit = (1-u-v) v0 + u v1 + v v2), which is what the rasterizer
  * interpolates for the GPU; the geometric normal when the mesh has no normals or the
  * interpolated one vanishes. */
-static rf_vec3 rf_shading_normal(const rf_tracer* tr, const rf_hit* hit)
+/* The unit normal of a triangle from its winding (counter-clockwise seen from the side it
+ * points to, OpenGL's front face). */
+static rf_vec3 rf_winding_normal(const float* positions, const unsigned* tri)
 {
-  const rf_mesh* mesh = &tr->meshes[hit->geom];
-  const unsigned* tri = mesh->triangles + 3 * (size_t)hit->prim;
-  rf_vec3 n;
-  if (mesh->normals != NULL)
+  const rf_vec3 p0 = rf_mesh_vector(positions, tri[0]);
+  const rf_vec3 p1 = rf_mesh_vector(positions, tri[1]);
+  const rf_vec3 p2 = rf_mesh_vector(positions, tri[2]);
+  return rf_vec3_normalize(rf_vec3_cross(rf_vec3_sub(p1, p0), rf_vec3_sub(p2, p0)));
+}
+
+static rf_vec3 rf_surface_normal(
+  const float* positions, const float* normals, const unsigned* triangles, const rf_hit* hit)
+{
+  const unsigned* tri = triangles + 3 * (size_t)hit->prim;
+  if (normals != NULL)
   {
-    n = rf_vec3_add(rf_vec3_scale(rf_mesh_vector(mesh->normals, tri[0]), 1.0 - hit->u - hit->v),
-      rf_vec3_add(rf_vec3_scale(rf_mesh_vector(mesh->normals, tri[1]), hit->u),
-        rf_vec3_scale(rf_mesh_vector(mesh->normals, tri[2]), hit->v)));
+    rf_vec3 n =
+      rf_vec3_add(rf_vec3_scale(rf_mesh_vector(normals, tri[0]), 1.0 - hit->u - hit->v),
+        rf_vec3_add(rf_vec3_scale(rf_mesh_vector(normals, tri[1]), hit->u),
+          rf_vec3_scale(rf_mesh_vector(normals, tri[2]), hit->v)));
     n = rf_vec3_normalize(n);
     if (rf_vec3_length(n) > 0.0)
     {
       return n;
     }
   }
+  return rf_winding_normal(positions, tri);
+}
+
+static rf_vec3 rf_shading_normal(const rf_tracer* tr, const rf_hit* hit)
+{
+  const rf_mesh* mesh = &tr->meshes[hit->geom];
+  return rf_surface_normal(mesh->positions, mesh->normals, mesh->triangles, hit);
+}
+
+/* ------------------------------------------------------------------------------------------
+ * Opaque surfaces: coloured as VTK draws them (rf_opaque_material). */
+
+void rf_opaque_shade(const rf_opaque_material* material, const double* base_colour,
+  double normal_view_z, double rgb[3])
+{
+  const double* ambient = base_colour != NULL ? base_colour : material->ambient_colour;
+  const double* diffuse = base_colour != NULL ? base_colour : material->diffuse_colour;
+  const double facing = fmax(normal_view_z, 0.0);
+  const double shine = material->specular > 0.0 ? pow(facing, material->specular_power) : 0.0;
+  int c;
+  for (c = 0; c < 3; ++c)
   {
-    const rf_vec3 p0 = rf_mesh_vector(mesh->positions, tri[0]);
-    const rf_vec3 p1 = rf_mesh_vector(mesh->positions, tri[1]);
-    const rf_vec3 p2 = rf_mesh_vector(mesh->positions, tri[2]);
-    n = rf_vec3_normalize(rf_vec3_cross(rf_vec3_sub(p1, p0), rf_vec3_sub(p2, p0)));
+    double value = material->ambient * ambient[c];
+    if (material->lighting)
+    {
+      value += material->diffuse * diffuse[c] * facing +
+        material->specular * material->specular_colour[c] * shine;
+    }
+    else
+    {
+      value += material->diffuse * diffuse[c];
+    }
+    rgb[c] = fmin(fmax(value, 0.0), 1.0);
   }
-  return n;
+}
+
+/* The scalar colour at a hit: interpolated per vertex, flat per triangle. */
+static void rf_opaque_base_colour(const rf_opaque_mesh* mesh, const rf_hit* hit, double rgb[3])
+{
+  const unsigned* tri = mesh->triangles + 3 * (size_t)hit->prim;
+  int c;
+  for (c = 0; c < 3; ++c)
+  {
+    if (mesh->colour_binding == RF_COLOUR_PER_TRIANGLE)
+    {
+      rgb[c] = mesh->colours[3 * (size_t)hit->prim + c];
+    }
+    else
+    {
+      rgb[c] = (1.0 - hit->u - hit->v) * mesh->colours[3 * (size_t)tri[0] + c] +
+        hit->u * mesh->colours[3 * (size_t)tri[1] + c] +
+        hit->v * mesh->colours[3 * (size_t)tri[2] + c];
+    }
+  }
+}
+
+/* The colour the camera sees at an opaque hit, whichever ray found it: the pass shows what
+ * it captured from the camera. VTK flips the normal on back faces (the triangle's winding
+ * turns away from the camera) and lights along the view axis. */
+static void rf_opaque_colour(const rf_tracer* tr, const rf_hit* hit, double rgb[3])
+{
+  const rf_opaque_mesh* mesh = &tr->opaque[hit->geom];
+  const rf_vec3 toward_viewer =
+    tr->parallel ? tr->view_z_world : rf_vec3_sub(tr->eye_world, hit->point);
+  const rf_vec3 winding = rf_winding_normal(mesh->positions, mesh->triangles + 3 * (size_t)hit->prim);
+  rf_vec3 normal = rf_surface_normal(mesh->positions, mesh->normals, mesh->triangles, hit);
+  double base[3];
+  if (rf_vec3_dot(winding, toward_viewer) < 0.0)
+  {
+    normal = rf_vec3_scale(normal, -1.0);
+  }
+  if (mesh->colour_binding != RF_COLOUR_MATERIAL)
+  {
+    rf_opaque_base_colour(mesh, hit, base);
+  }
+  rf_opaque_shade(&mesh->material, mesh->colour_binding != RF_COLOUR_MATERIAL ? base : NULL,
+    rf_vec3_dot(normal, tr->view_z_world), rgb);
 }
 
 static void rf_environment(const rf_tracer* tr, rf_vec3 d, double rgb[3])
@@ -274,6 +377,7 @@ static int rf_refract_policy(rf_vec3 incident, rf_vec3 normal, double eta, int c
 typedef struct rf_pixel
 {
   int hit;
+  int opaque;
   double colour[3];
   rf_vec3 p1;
   rf_vec3 p2;
@@ -282,6 +386,36 @@ typedef struct rf_pixel
   int bounces;
   int tir;
 } rf_pixel;
+
+/* Shades an opaque surface met by the primary ray before tfar (where glass would start);
+ * returns 1 when there is one. */
+static int rf_shade_primary_opaque(
+  const rf_tracer* tr, rf_vec3 origin, rf_vec3 view_dir, double tfar, rf_pixel* px)
+{
+  rf_hit h;
+  if (!rf_intersect_opaque(tr, origin, view_dir, 0.0, tfar, &h))
+  {
+    return 0;
+  }
+  px->opaque = 1;
+  rf_opaque_colour(tr, &h, px->colour);
+  return 1;
+}
+
+/* What a ray leaving the glass at o along d shows in the two-interface model: the first
+ * opaque surface (the pass's captured scene), else the environment. */
+static void rf_behind(const rf_tracer* tr, rf_vec3 o, rf_vec3 d, double rgb[3])
+{
+  rf_hit h;
+  if (rf_intersect_opaque(tr, o, d, tr->epsilon, INFINITY, &h))
+  {
+    rf_opaque_colour(tr, &h, rgb);
+  }
+  else
+  {
+    rf_environment(tr, d, rgb);
+  }
+}
 
 /* The GPU's formula (rfRefractionFS.glsl) with the true exit point. */
 static void rf_shade_two_interface(const rf_tracer* tr, rf_vec3 origin, rf_vec3 view_dir,
@@ -301,6 +435,11 @@ static void rf_shade_two_interface(const rf_tracer* tr, rf_vec3 origin, rf_vec3 
   const int clamp = tr->options->tir_clamp != 0;
   if (!rf_intersect(tr, origin, view_dir, 0.0, tfar, RTC_INVALID_GEOMETRY_ID,
         RTC_INVALID_GEOMETRY_ID, &h1))
+  {
+    rf_shade_primary_opaque(tr, origin, view_dir, tfar, px);
+    return;
+  }
+  if (rf_shade_primary_opaque(tr, origin, view_dir, h1.t, px))
   {
     return;
   }
@@ -327,8 +466,8 @@ static void rf_shade_two_interface(const rf_tracer* tr, rf_vec3 origin, rf_vec3 
     px->bounces = 2;
   }
   px->thickness = rf_vec3_length(rf_vec3_sub(px->p2, px->p1));
-  rf_environment(tr, reflected, env_r);
-  rf_environment(tr, px->t2, env_t);
+  rf_behind(tr, h1.point, reflected, env_r);
+  rf_behind(tr, px->p2, px->t2, env_t);
   for (c = 0; c < 3; ++c)
   {
     const double absorbed = exp(-mesh->absorption[c] * px->thickness);
@@ -369,10 +508,12 @@ static void rf_radiance(const rf_tracer* tr, rf_vec3 o, rf_vec3 d, const rf_hit*
   const rf_media* media, int depth, double weight, rf_path* path, double rgb[3])
 {
   rf_hit hit;
+  rf_hit wall;
   const double* absorption =
     media->count > 0 ? tr->meshes[media->mesh[media->count - 1]].absorption : NULL;
   double attenuation[3] = { 1.0, 1.0, 1.0 };
   double strongest = 0.0;
+  int glass;
   int c;
   if (path != NULL)
   {
@@ -380,10 +521,25 @@ static void rf_radiance(const rf_tracer* tr, rf_vec3 o, rf_vec3 d, const rf_hit*
   }
   if (depth >= tr->options->max_depth || weight < RF_TRACE_MIN_WEIGHT)
   {
-    rf_environment(tr, d, rgb); /* the path ends: straight into the environment */
+    /* The path ends: straight on into the scene around the glass. */
+    rf_behind(tr, o, d, rgb);
     return;
   }
-  if (!rf_intersect(tr, o, d, tr->epsilon, INFINITY, from->geom, from->prim, &hit))
+  glass = rf_intersect(tr, o, d, tr->epsilon, INFINITY, from->geom, from->prim, &hit);
+  if (rf_intersect_opaque(tr, o, d, tr->epsilon, glass ? hit.t : INFINITY, &wall))
+  {
+    rf_opaque_colour(tr, &wall, rgb);
+    for (c = 0; c < 3; ++c)
+    {
+      rgb[c] *= absorption != NULL ? exp(-absorption[c] * wall.t) : 1.0;
+    }
+    if (path != NULL && absorption != NULL)
+    {
+      path->inside_length += wall.t;
+    }
+    return;
+  }
+  if (!glass)
   {
     rf_environment(tr, d, rgb);
     if (absorption != NULL)
@@ -508,6 +664,11 @@ static void rf_shade_full(const rf_tracer* tr, rf_vec3 origin, rf_vec3 view_dir,
   if (!rf_intersect(tr, origin, view_dir, 0.0, tfar, RTC_INVALID_GEOMETRY_ID,
         RTC_INVALID_GEOMETRY_ID, &h1))
   {
+    rf_shade_primary_opaque(tr, origin, view_dir, tfar, px);
+    return;
+  }
+  if (rf_shade_primary_opaque(tr, origin, view_dir, h1.t, px))
+  {
     return;
   }
   air.count = 0;
@@ -598,7 +759,7 @@ static void rf_trace_pixel(const rf_tracer* tr, int i, int j)
         hits += sample.hit;
         for (c = 0; c < 3; ++c)
         {
-          colour[c] += sample.hit ? sample.colour[c] : tr->options->background[c];
+          colour[c] += sample.hit || sample.opaque ? sample.colour[c] : tr->options->background[c];
         }
       }
     }
@@ -646,6 +807,10 @@ static void rf_trace_pixel(const rf_tracer* tr, int i, int j)
   if (out->hit != NULL)
   {
     out->hit[index] = (unsigned char)(px.hit ? 1 : 0);
+  }
+  if (out->opaque != NULL)
+  {
+    out->opaque[index] = (unsigned char)(px.opaque ? 1 : 0);
   }
 }
 
@@ -798,15 +963,105 @@ static rf_status rf_validate_mesh(const rf_mesh* mesh)
   return RF_OK;
 }
 
-static rf_status rf_validate_inputs(const rf_mesh* meshes, size_t mesh_count,
-  const rf_camera* camera, const rf_trace_options* options, const rf_trace_image* out)
+static int rf_in_unit_range(const double* v, size_t n)
 {
-  size_t m;
-  if ((meshes == NULL && mesh_count > 0) || camera == NULL || options == NULL || out == NULL)
+  size_t i;
+  for (i = 0; i < n; ++i)
+  {
+    if (!(v[i] >= 0.0 && v[i] <= 1.0))
+    {
+      return 0;
+    }
+  }
+  return 1;
+}
+
+static rf_status rf_validate_material(const rf_opaque_material* m)
+{
+  const double factors[4] = { m->ambient, m->diffuse, m->specular, m->specular_power };
+  if (!rf_all_finite(factors, 4) || !rf_all_finite(m->ambient_colour, 3) ||
+    !rf_all_finite(m->diffuse_colour, 3) || !rf_all_finite(m->specular_colour, 3))
+  {
+    return RF_ERR_NOT_FINITE;
+  }
+  if (m->ambient < 0.0 || m->diffuse < 0.0 || m->specular < 0.0 || m->specular_power < 0.0 ||
+    !rf_in_unit_range(m->ambient_colour, 3) || !rf_in_unit_range(m->diffuse_colour, 3) ||
+    !rf_in_unit_range(m->specular_colour, 3))
+  {
+    return RF_REF_ERR_BAD_OPTION;
+  }
+  return RF_OK;
+}
+
+static rf_status rf_validate_opaque_mesh(const rf_opaque_mesh* mesh)
+{
+  size_t colour_count = 0;
+  size_t i;
+  const rf_status s = rf_validate_material(&mesh->material);
+  if (s != RF_OK)
+  {
+    return s;
+  }
+  switch (mesh->colour_binding)
+  {
+    case RF_COLOUR_MATERIAL:
+      break;
+    case RF_COLOUR_PER_VERTEX:
+      colour_count = mesh->vertex_count;
+      break;
+    case RF_COLOUR_PER_TRIANGLE:
+      colour_count = mesh->triangle_count;
+      break;
+    default:
+      return RF_REF_ERR_BAD_OPTION;
+  }
+  if (mesh->triangle_count == 0)
+  {
+    return RF_OK;
+  }
+  if (mesh->positions == NULL || mesh->triangles == NULL ||
+    (mesh->colour_binding != RF_COLOUR_MATERIAL && mesh->colours == NULL))
   {
     return RF_ERR_NULL_ARGUMENT;
   }
-  if (mesh_count > UINT_MAX - 1)
+  if (mesh->triangle_count > UINT_MAX / 3 || mesh->vertex_count > UINT_MAX)
+  {
+    return RF_REF_ERR_BAD_OPTION;
+  }
+  for (i = 0; i < 3 * mesh->triangle_count; ++i)
+  {
+    if (mesh->triangles[i] >= mesh->vertex_count)
+    {
+      return RF_REF_ERR_INDEX_OUT_OF_RANGE;
+    }
+  }
+  if (!rf_all_finite_f(mesh->positions, 3 * mesh->vertex_count) ||
+    (mesh->normals != NULL && !rf_all_finite_f(mesh->normals, 3 * mesh->vertex_count)) ||
+    (colour_count > 0 && !rf_all_finite_f(mesh->colours, 3 * colour_count)))
+  {
+    return RF_ERR_NOT_FINITE;
+  }
+  for (i = 0; i < 3 * colour_count; ++i)
+  {
+    if (!(mesh->colours[i] >= 0.f && mesh->colours[i] <= 1.f))
+    {
+      return RF_REF_ERR_BAD_OPTION;
+    }
+  }
+  return RF_OK;
+}
+
+static rf_status rf_validate_inputs(const rf_mesh* meshes, size_t mesh_count,
+  const rf_opaque_mesh* opaque, size_t opaque_count, const rf_camera* camera,
+  const rf_trace_options* options, const rf_trace_image* out)
+{
+  size_t m;
+  if ((meshes == NULL && mesh_count > 0) || (opaque == NULL && opaque_count > 0) ||
+    camera == NULL || options == NULL || out == NULL)
+  {
+    return RF_ERR_NULL_ARGUMENT;
+  }
+  if (mesh_count > UINT_MAX - 1 || opaque_count > UINT_MAX - 1)
   {
     return RF_REF_ERR_BAD_OPTION;
   }
@@ -834,6 +1089,14 @@ static rf_status rf_validate_inputs(const rf_mesh* meshes, size_t mesh_count,
   for (m = 0; m < mesh_count; ++m)
   {
     const rf_status s = rf_validate_mesh(&meshes[m]);
+    if (s != RF_OK)
+    {
+      return s;
+    }
+  }
+  for (m = 0; m < opaque_count; ++m)
+  {
+    const rf_status s = rf_validate_opaque_mesh(&opaque[m]);
     if (s != RF_OK)
     {
       return s;
@@ -882,9 +1145,89 @@ static double rf_scene_epsilon(const rf_mesh* meshes, size_t mesh_count)
   return fmax(1e-6 * diagonal, 1e-6 * largest) + 1e-30;
 }
 
+/* A triangle geometry in scene under the given ID (so a hit finds its mesh directly). */
+static rf_status rf_attach_triangles(RTCDevice device, RTCScene scene, const float* positions,
+  size_t vertex_count, const unsigned* triangles, size_t triangle_count, unsigned id)
+{
+  RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  float* vertices;
+  unsigned* indices;
+  if (geometry == NULL)
+  {
+    return RF_REF_ERR_EMBREE;
+  }
+  /* Copies (not shared buffers): Embree reads vertex buffers with 16-byte loads past the
+   * last vertex, which a caller's array need not allow. */
+  vertices = (float*)rtcSetNewGeometryBuffer(
+    geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertex_count);
+  indices = (unsigned*)rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
+    RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangle_count);
+  if (vertices == NULL || indices == NULL)
+  {
+    rtcReleaseGeometry(geometry);
+    return RF_REF_ERR_OUT_OF_MEMORY;
+  }
+  memcpy(vertices, positions, 3 * sizeof(float) * vertex_count);
+  memcpy(indices, triangles, 3 * sizeof(unsigned) * triangle_count);
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometryByID(scene, geometry, id);
+  rtcReleaseGeometry(geometry);
+  return RF_OK;
+}
+
+static RTCScene rf_new_scene(RTCDevice device)
+{
+  RTCScene scene = rtcNewScene(device);
+  if (scene != NULL)
+  {
+    /* Robust (watertight) traversal: a ray through a shared edge or vertex must not slip
+     * between triangles, or a closed mesh would leak. */
+    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+  }
+  return scene;
+}
+
+/* The opaque surfaces in a scene of their own: the two-interface mode looks for them alone
+ * along the rays leaving the glass. */
+static rf_status rf_build_opaque_scene(rf_tracer* tr)
+{
+  size_t m;
+  int any = 0;
+  for (m = 0; m < tr->opaque_count; ++m)
+  {
+    any = any || tr->opaque[m].triangle_count > 0;
+  }
+  if (!any)
+  {
+    return RF_OK;
+  }
+  tr->opaque_scene = rf_new_scene(tr->device);
+  if (tr->opaque_scene == NULL)
+  {
+    return RF_REF_ERR_EMBREE;
+  }
+  for (m = 0; m < tr->opaque_count; ++m)
+  {
+    const rf_opaque_mesh* mesh = &tr->opaque[m];
+    if (mesh->triangle_count > 0)
+    {
+      const rf_status s = rf_attach_triangles(tr->device, tr->opaque_scene, mesh->positions,
+        mesh->vertex_count, mesh->triangles, mesh->triangle_count, (unsigned)m);
+      if (s != RF_OK)
+      {
+        return s;
+      }
+    }
+  }
+  rtcCommitScene(tr->opaque_scene);
+  return RF_OK;
+}
+
 static rf_status rf_build_scene(rf_tracer* tr)
 {
   size_t m;
+  rf_status s;
   char config[64];
   snprintf(config, sizeof(config), "threads=%d", tr->options->threads);
   tr->device = rtcNewDevice(config);
@@ -893,49 +1236,30 @@ static rf_status rf_build_scene(rf_tracer* tr)
     return RF_REF_ERR_EMBREE;
   }
   rtcSetDeviceErrorFunction(tr->device, rf_embree_error, NULL);
-  tr->scene = rtcNewScene(tr->device);
+  tr->scene = rf_new_scene(tr->device);
   if (tr->scene == NULL)
   {
     return RF_REF_ERR_EMBREE;
   }
-  /* Robust (watertight) traversal: a ray through a shared edge or vertex must not slip
-   * between triangles, or a closed mesh would leak. */
-  rtcSetSceneFlags(tr->scene, RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(tr->scene, RTC_BUILD_QUALITY_HIGH);
   for (m = 0; m < tr->mesh_count; ++m)
   {
     const rf_mesh* mesh = &tr->meshes[m];
-    RTCGeometry geometry;
-    float* vertices;
-    unsigned* indices;
-    if (mesh->triangle_count == 0)
+    if (mesh->triangle_count > 0)
     {
-      continue;
+      s = rf_attach_triangles(tr->device, tr->scene, mesh->positions, mesh->vertex_count,
+        mesh->triangles, mesh->triangle_count, (unsigned)m);
+      if (s != RF_OK)
+      {
+        return s;
+      }
     }
-    geometry = rtcNewGeometry(tr->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    if (geometry == NULL)
-    {
-      return RF_REF_ERR_EMBREE;
-    }
-    /* Copies (not shared buffers): Embree reads vertex buffers with 16-byte loads past the
-     * last vertex, which a caller's array need not allow. */
-    vertices = (float*)rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
-      RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh->vertex_count);
-    indices = (unsigned*)rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
-      RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh->triangle_count);
-    if (vertices == NULL || indices == NULL)
-    {
-      rtcReleaseGeometry(geometry);
-      return RF_REF_ERR_OUT_OF_MEMORY;
-    }
-    memcpy(vertices, mesh->positions, 3 * sizeof(float) * mesh->vertex_count);
-    memcpy(indices, mesh->triangles, 3 * sizeof(unsigned) * mesh->triangle_count);
-    rtcCommitGeometry(geometry);
-    /* The geometry ID is the mesh's index, so a hit finds its mesh directly. */
-    rtcAttachGeometryByID(tr->scene, geometry, (unsigned)m);
-    rtcReleaseGeometry(geometry);
   }
   rtcCommitScene(tr->scene);
+  s = rf_build_opaque_scene(tr);
+  if (s != RF_OK)
+  {
+    return s;
+  }
   if (rtcGetDeviceError(tr->device) != RTC_ERROR_NONE)
   {
     return RF_REF_ERR_EMBREE;
@@ -948,6 +1272,10 @@ static void rf_release_scene(rf_tracer* tr)
   if (tr->scene != NULL)
   {
     rtcReleaseScene(tr->scene);
+  }
+  if (tr->opaque_scene != NULL)
+  {
+    rtcReleaseScene(tr->opaque_scene);
   }
   if (tr->device != NULL)
   {
@@ -1004,8 +1332,10 @@ rf_status rf_trace_image_alloc(rf_trace_image* img, int w, int h)
   img->bounces = (int*)calloc(n, sizeof(int));
   img->tir = (unsigned char*)calloc(n, 1);
   img->hit = (unsigned char*)calloc(n, 1);
-  if (img->colour == NULL || img->coverage == NULL || img->p1 == NULL || img->p2 == NULL || img->t2 == NULL ||
-    img->thickness == NULL || img->bounces == NULL || img->tir == NULL || img->hit == NULL)
+  img->opaque = (unsigned char*)calloc(n, 1);
+  if (img->colour == NULL || img->coverage == NULL || img->p1 == NULL || img->p2 == NULL ||
+    img->t2 == NULL || img->thickness == NULL || img->bounces == NULL || img->tir == NULL ||
+    img->hit == NULL || img->opaque == NULL)
   {
     rf_trace_image_free(img);
     return RF_REF_ERR_OUT_OF_MEMORY;
@@ -1028,14 +1358,23 @@ void rf_trace_image_free(rf_trace_image* img)
   free(img->bounces);
   free(img->tir);
   free(img->hit);
+  free(img->opaque);
   memset(img, 0, sizeof(*img));
 }
 
 rf_status rf_trace(const rf_mesh* meshes, size_t mesh_count, const rf_camera* camera,
   const rf_trace_options* options, rf_trace_image* out)
 {
+  return rf_trace_scene(meshes, mesh_count, NULL, 0, camera, options, out);
+}
+
+rf_status rf_trace_scene(const rf_mesh* meshes, size_t mesh_count,
+  const rf_opaque_mesh* opaque, size_t opaque_count, const rf_camera* camera,
+  const rf_trace_options* options, rf_trace_image* out)
+{
   rf_tracer tr;
-  rf_status s = rf_validate_inputs(meshes, mesh_count, camera, options, out);
+  rf_status s =
+    rf_validate_inputs(meshes, mesh_count, opaque, opaque_count, camera, options, out);
   if (s != RF_OK)
   {
     return s;
@@ -1043,6 +1382,8 @@ rf_status rf_trace(const rf_mesh* meshes, size_t mesh_count, const rf_camera* ca
   memset(&tr, 0, sizeof(tr));
   tr.meshes = meshes;
   tr.mesh_count = mesh_count;
+  tr.opaque = opaque;
+  tr.opaque_count = opaque_count;
   tr.options = options;
   tr.out = out;
   memcpy(tr.world_to_view, camera->view, sizeof(tr.world_to_view));
@@ -1051,6 +1392,12 @@ rf_status rf_trace(const rf_mesh* meshes, size_t mesh_count, const rf_camera* ca
   {
     return RF_REF_ERR_BAD_OPTION;
   }
+  /* Perspective projections map w from -z (row 3 is (0, 0, -1, 0)); parallel ones keep w. */
+  tr.parallel = camera->projection[14] == 0.0;
+  tr.eye_world = rf_mat4_point(tr.view_to_world, rf_vec3_make(0.0, 0.0, 0.0));
+  tr.view_z_world = rf_vec3_normalize(rf_vec3_make(
+    tr.world_to_view[8], tr.world_to_view[9], tr.world_to_view[10]));
+  /* The glass alone sets the ray offset: opaque surfaces leave the glass's rays unchanged. */
   tr.epsilon = rf_scene_epsilon(meshes, mesh_count);
   s = rf_build_scene(&tr);
   if (s == RF_OK)

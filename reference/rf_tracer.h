@@ -62,6 +62,51 @@ typedef struct rf_mesh
   double absorption[3];     /* Beer-Lambert coefficients per unit length, >= 0; 0 = clear */
 } rf_mesh;
 
+/* How an opaque surface is coloured: what VTK 9.1's polydata mapper draws with the renderer's
+ * default light, a headlight of intensity 1 with two-sided lighting (light complexity 1 in
+ * vtkOpenGLPolyDataMapper). With N the surface normal (flipped on faces whose winding turns
+ * away from the camera, as VTK flips it on back faces) and n_z its component along the view
+ * axis (toward the viewer; VTK's headlight shines along the view axis at every point, not
+ * from the camera position):
+ *   lit:   ambient Ca + diffuse Cd max(n_z, 0) + specular Cs max(n_z, 0)^specular_power
+ *   unlit: ambient Ca + diffuse Cd                        (VTK with lighting off)
+ * Ca and Cd are replaced by a mesh's scalar colour where it has one (VTK's default scalar
+ * material mode). Every channel is clamped to [0, 1], as the 8-bit framebuffer holds it. */
+typedef struct rf_opaque_material
+{
+  int lighting;          /* 1: lit by the headlight; 0: the plain colour */
+  double ambient;        /* vtkProperty's Ambient, Diffuse, Specular, SpecularPower */
+  double diffuse;
+  double specular;
+  double specular_power;
+  double ambient_colour[3]; /* linear RGB in [0, 1], as VTK hands them to GL */
+  double diffuse_colour[3];
+  double specular_colour[3];
+} rf_opaque_material;
+
+typedef enum rf_colour_binding
+{
+  RF_COLOUR_MATERIAL = 0,     /* no scalar colours: the material's colours */
+  RF_COLOUR_PER_VERTEX = 1,   /* interpolated barycentrically (point scalars) */
+  RF_COLOUR_PER_TRIANGLE = 2  /* flat (cell scalars) */
+} rf_colour_binding;
+
+/* One opaque object: the scene around the glass. It stops every ray that meets it (primary,
+ * reflected or leaving the glass) with its colour, as the pass's capture of the opaque scene
+ * shows it. Triangles index positions (and normals, when given). */
+typedef struct rf_opaque_mesh
+{
+  const float* positions;    /* xyz per vertex, WORLD space (the glass meshes' frame) */
+  const float* normals;      /* xyz per vertex (WORLD space), or NULL: geometric normals */
+  size_t vertex_count;
+  const unsigned* triangles; /* 3 vertex indices per triangle */
+  size_t triangle_count;
+  rf_colour_binding colour_binding;
+  const float* colours;      /* rgb in [0, 1] per vertex or per triangle (colour_binding),
+                                NULL with RF_COLOUR_MATERIAL */
+  rf_opaque_material material;
+} rf_opaque_mesh;
+
 typedef struct rf_camera
 {
   double view[16];       /* world -> view, row-major (vtkCamera::GetViewTransformMatrix) */
@@ -105,14 +150,16 @@ typedef struct rf_trace_options
 } rf_trace_options;
 
 /* Per-pixel results; every array is optional (NULL: not written) except as noted.
- *  colour     3 floats, linear RGB, 0 where no glass is seen; with samples_per_side > 1
- *             the average over the sub-samples (the background where they miss the glass);
+ *  colour     3 floats, linear RGB, 0 where nothing is seen; an opaque surface's colour
+ *             where the primary ray meets one before any glass; with samples_per_side > 1
+ *             the average over the sub-samples (the background where they miss everything);
  *  coverage   share of the sub-samples that see glass (with one sample: hit);
  *  p1, p2, t2 3 floats, VIEW space: entry point, exit point, exit direction (unit);
  *  thickness  |P2 - P1| (two-interface), length travelled inside glass (full);
  *  bounces    interfaces on the (dominant) path; 0 where no glass is seen;
  *  tir        1 where TIR occurred at the exit (two-interface) or on the dominant path (full);
- *  hit        1 where glass is seen.
+ *  hit        1 where glass is seen;
+ *  opaque     1 where an opaque surface is seen in front of any glass (hit is then 0).
  * Everything but colour and coverage is the pixel centre's, whatever samples_per_side.
  * In the full mode p2, t2, thickness, bounces and tir describe the dominant path, the one
  * that transmits at every interface where it can (reflects only under TIR): the path the
@@ -130,6 +177,7 @@ typedef struct rf_trace_image
   int* bounces;
   unsigned char* tir;
   unsigned char* hit;
+  unsigned char* opaque;
 } rf_trace_image;
 
 /* Defaults: two-interface, tir_clamp 1 (the paper), max_depth 8, fresnel 1, threads 2,
@@ -150,6 +198,23 @@ RF_REFERENCE_EXPORT void rf_trace_image_free(rf_trace_image* img);
  * RF_REF_ERR_EMBREE. On error out's contents are unspecified. */
 RF_REFERENCE_EXPORT rf_status rf_trace(const rf_mesh* meshes, size_t mesh_count,
   const rf_camera* camera, const rf_trace_options* options, rf_trace_image* out);
+
+/* rf_trace with opaque objects around the glass (rf_opaque_mesh): rays that meet one end
+ * there with its colour (rf_opaque_shade). In the two-interface mode the rays leaving the
+ * glass (T2 from P2, and the reflection R from P1) look for opaque surfaces only, as the
+ * pass looks for them in its capture of the opaque scene; in the full mode every ray meets
+ * whichever comes first. Errors as rf_trace, and for an opaque mesh: RF_ERR_NOT_FINITE (a
+ * position, normal, colour or material value), RF_REF_ERR_BAD_OPTION (a colour binding
+ * without colours or an unknown one, a colour or material value outside its range). */
+RF_REFERENCE_EXPORT rf_status rf_trace_scene(const rf_mesh* meshes, size_t mesh_count,
+  const rf_opaque_mesh* opaque, size_t opaque_count, const rf_camera* camera,
+  const rf_trace_options* options, rf_trace_image* out);
+
+/* The colour of an opaque surface point (the formula of rf_opaque_material): base_colour is
+ * the scalar colour there, or NULL for the material's own; normal_view_z is the unit
+ * normal's component toward the viewer along the view axis, after the two-sided flip. */
+RF_REFERENCE_EXPORT void rf_opaque_shade(const rf_opaque_material* material,
+  const double* base_colour, double normal_view_z, double rgb[3]);
 
 #ifdef __cplusplus
 }

@@ -20,7 +20,10 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPropCollection.h>
+#include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkTexture.h>
 #include <vtkTriangleFilter.h>
 
@@ -44,6 +47,171 @@ struct WorldMesh
   std::vector<float> Normals;
   std::vector<unsigned> Triangles;
 };
+
+// One opaque actor in world space with what colours it (rf_opaque_mesh points into it).
+struct OpaqueWorldMesh
+{
+  WorldMesh Geometry;
+  std::vector<float> Colours; // scalar colours per vertex or per triangle, or none
+  rf_colour_binding Binding = RF_COLOUR_MATERIAL;
+  rf_opaque_material Material = {};
+};
+
+// An actor's polydata as triangles in world space (the GPU sees the mapper's input through
+// the actor's matrix; normals go through the inverse transpose, as VTK's normal matrix), or
+// false with a message. The triangulated polydata is kept in `triangulated` (its cell data
+// follows the triangles).
+bool TriangulateToWorld(vtkActor* actor, vtkPolyData* input, bool useNormals, WorldMesh& world,
+  vtkSmartPointer<vtkPolyData>& triangulated, std::string& error)
+{
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputData(input);
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  triangulate->Update();
+  triangulated = triangulate->GetOutput();
+  vtkPoints* points = triangulated->GetPoints();
+  const vtkIdType nPoints = points ? points->GetNumberOfPoints() : 0;
+  if (nPoints == 0 || triangulated->GetNumberOfPolys() == 0)
+  {
+    error = "has no triangles after triangulation";
+    return false;
+  }
+  vtkDataArray* normals = useNormals ? triangulated->GetPointData()->GetNormals() : nullptr;
+  if (normals && normals->GetNumberOfComponents() != 3)
+  {
+    normals = nullptr;
+  }
+  vtkMatrix4x4* matrix = actor->GetMatrix();
+  vtkNew<vtkMatrix4x4> normalMatrix;
+  vtkMatrix4x4::Invert(matrix, normalMatrix);
+  normalMatrix->Transpose();
+  world.WorldPositions.resize(3 * nPoints);
+  if (normals)
+  {
+    world.Normals.resize(3 * nPoints);
+  }
+  for (vtkIdType p = 0; p < nPoints; ++p)
+  {
+    double x[4] = { 0.0, 0.0, 0.0, 1.0 };
+    points->GetPoint(p, x);
+    double w[4];
+    matrix->MultiplyPoint(x, w);
+    for (int c = 0; c < 3; ++c)
+    {
+      const double value = w[c] / w[3];
+      if (!std::isfinite(value))
+      {
+        error = "has a non-finite point (id " + std::to_string(p) + ")";
+        return false;
+      }
+      world.WorldPositions[3 * p + c] = value;
+    }
+    if (normals)
+    {
+      double n[4] = { 0.0, 0.0, 0.0, 0.0 };
+      normals->GetTuple(p, n);
+      double m[4];
+      normalMatrix->MultiplyPoint(n, m);
+      const double length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+      for (int c = 0; c < 3; ++c)
+      {
+        // A zero or broken normal is stored as zero: the tracer then falls back to the
+        // triangle's geometric normal.
+        const double value = length > 0.0 ? m[c] / length : 0.0;
+        world.Normals[3 * p + c] = std::isfinite(value) ? static_cast<float>(value) : 0.f;
+      }
+    }
+  }
+  vtkCellArray* polys = triangulated->GetPolys();
+  world.Triangles.reserve(3 * polys->GetNumberOfCells());
+  vtkIdType cellSize = 0;
+  const vtkIdType* cell = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(cellSize, cell);)
+  {
+    if (cellSize != 3)
+    {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      world.Triangles.push_back(static_cast<unsigned>(cell[k]));
+    }
+  }
+  return true;
+}
+
+// Why an actor cannot be traced as an opaque surface, or "" when it can.
+std::string OpaqueUnsupported(vtkRenderer* renderer, vtkActor* actor)
+{
+  if (!renderer->GetViewProps()->IsItemPresent(actor))
+  {
+    return "is part of an assembly (its matrix is not its own; e.g. vtkAxesActor)";
+  }
+  vtkMapper* mapper = actor->GetMapper();
+  if (!mapper)
+  {
+    return "has no mapper";
+  }
+  mapper->Update();
+  if (!vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)))
+  {
+    return "has no vtkPolyData input";
+  }
+  if (actor->GetProperty()->GetOpacity() < 1.0 || actor->HasTranslucentPolygonalGeometry())
+  {
+    return "is translucent";
+  }
+  if (actor->GetProperty()->GetRepresentation() != VTK_SURFACE)
+  {
+    return "is drawn as points or wireframe";
+  }
+  return "";
+}
+
+// The opaque actor's colours: its property's shading parameters, and the mapper's scalar
+// colours (unsigned char RGBA from MapScalars, as VTK hands them to GL) per vertex or per
+// triangle of the triangulated polydata.
+void OpaqueColours(vtkActor* actor, vtkPolyData* triangulated, OpaqueWorldMesh& opaque)
+{
+  vtkProperty* property = actor->GetProperty();
+  rf_opaque_material& m = opaque.Material;
+  m.lighting = property->GetLighting() ? 1 : 0;
+  m.ambient = property->GetAmbient();
+  m.diffuse = property->GetDiffuse();
+  m.specular = property->GetSpecular();
+  m.specular_power = property->GetSpecularPower();
+  property->GetAmbientColor(m.ambient_colour);
+  property->GetDiffuseColor(m.diffuse_colour);
+  property->GetSpecularColor(m.specular_colour);
+  vtkMapper* mapper = actor->GetMapper();
+  if (!mapper->GetScalarVisibility())
+  {
+    return;
+  }
+  int cellFlag = 0;
+  vtkUnsignedCharArray* colours = mapper->MapScalars(triangulated, 1.0, cellFlag);
+  if (!colours || colours->GetNumberOfComponents() < 3 || cellFlag > 1)
+  {
+    return; // no scalars (or field data colours, which VTK draws per cell id: not modelled)
+  }
+  const vtkIdType expected =
+    cellFlag == 1 ? triangulated->GetNumberOfCells() : triangulated->GetNumberOfPoints();
+  if (colours->GetNumberOfTuples() != expected)
+  {
+    return;
+  }
+  opaque.Binding = cellFlag == 1 ? RF_COLOUR_PER_TRIANGLE : RF_COLOUR_PER_VERTEX;
+  const int components = colours->GetNumberOfComponents();
+  opaque.Colours.resize(3 * static_cast<size_t>(expected));
+  for (vtkIdType i = 0; i < expected; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      opaque.Colours[3 * i + c] = colours->GetValue(components * i + c) / 255.f;
+    }
+  }
+}
 
 // Owns an rf_trace_image for the duration of a trace.
 struct ImageHolder
@@ -384,84 +552,18 @@ bool vtkRefractionReference::Trace(vtkRenderer* renderer, int width, int height)
       vtkErrorMacro("A glass actor's polydata is empty (no points or no polygons).");
       return false;
     }
-    vtkNew<vtkTriangleFilter> triangulate;
-    triangulate->SetInputData(input);
-    triangulate->PassVertsOff();
-    triangulate->PassLinesOff();
-    triangulate->Update();
-    vtkPolyData* mesh = triangulate->GetOutput();
-    vtkPoints* points = mesh->GetPoints();
-    const vtkIdType nPoints = points ? points->GetNumberOfPoints() : 0;
-    if (nPoints == 0 || mesh->GetNumberOfPolys() == 0)
+    WorldMesh world;
+    vtkSmartPointer<vtkPolyData> triangulated;
+    std::string problem;
+    if (!TriangulateToWorld(actor, input, true, world, triangulated, problem))
     {
-      vtkErrorMacro("A glass actor's polydata has no triangles after triangulation.");
+      vtkErrorMacro("A glass actor's polydata " << problem << ".");
       return false;
     }
-    vtkDataArray* normals = mesh->GetPointData()->GetNormals();
-    if (normals && normals->GetNumberOfComponents() != 3)
+    for (size_t i = 0; i < world.WorldPositions.size(); ++i)
     {
-      normals = nullptr;
-    }
-
-    vtkMatrix4x4* matrix = actor->GetMatrix();
-    vtkNew<vtkMatrix4x4> normalMatrix;
-    vtkMatrix4x4::Invert(matrix, normalMatrix);
-    normalMatrix->Transpose();
-
-    WorldMesh world;
-    world.WorldPositions.resize(3 * nPoints);
-    if (normals)
-    {
-      world.Normals.resize(3 * nPoints);
-    }
-    for (vtkIdType p = 0; p < nPoints; ++p)
-    {
-      double x[4] = { 0.0, 0.0, 0.0, 1.0 };
-      points->GetPoint(p, x);
-      double w[4];
-      matrix->MultiplyPoint(x, w);
-      for (int c = 0; c < 3; ++c)
-      {
-        const double value = w[c] / w[3];
-        if (!std::isfinite(value))
-        {
-          vtkErrorMacro("A glass actor has a non-finite point (id " << p << ").");
-          return false;
-        }
-        world.WorldPositions[3 * p + c] = value;
-        lo[c] = std::min(lo[c], value);
-        hi[c] = std::max(hi[c], value);
-      }
-      if (normals)
-      {
-        double n[4] = { 0.0, 0.0, 0.0, 0.0 };
-        normals->GetTuple(p, n);
-        double m[4];
-        normalMatrix->MultiplyPoint(n, m);
-        const double length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
-        for (int c = 0; c < 3; ++c)
-        {
-          // A zero or broken normal is stored as zero: the tracer then falls back to the
-          // triangle's geometric normal.
-          const double value = length > 0.0 ? m[c] / length : 0.0;
-          world.Normals[3 * p + c] = std::isfinite(value) ? static_cast<float>(value) : 0.f;
-        }
-      }
-    }
-    vtkCellArray* polys = mesh->GetPolys();
-    world.Triangles.reserve(3 * polys->GetNumberOfCells());
-    vtkIdType cellSize = 0;
-    const vtkIdType* cell = nullptr;
-    for (polys->InitTraversal(); polys->GetNextCell(cellSize, cell);)
-    {
-      if (cellSize != 3)
-      {
-        continue;
-      }
-      for (int k = 0; k < 3; ++k)
-      {
-        world.Triangles.push_back(static_cast<unsigned>(cell[k]));
-      }
+      lo[i % 3] = std::min(lo[i % 3], world.WorldPositions[i]);
+      hi[i % 3] = std::max(hi[i % 3], world.WorldPositions[i]);
     }
     triangles += static_cast<vtkIdType>(world.Triangles.size() / 3);
     worldMeshes.push_back(std::move(world));
@@ -471,6 +573,55 @@ bool vtkRefractionReference::Trace(vtkRenderer* renderer, int width, int height)
   {
     vtkErrorMacro("The renderer has no visible glass actor (vtkRefractionPass::MakeGlass).");
     return false;
+  }
+
+  // The opaque scene around the glass: what the pass captures before drawing the glass.
+  std::vector<OpaqueWorldMesh> opaqueMeshes;
+  if (this->OpaqueActors)
+  {
+    int skipped = 0;
+    std::string firstSkipped;
+    actors->InitTraversal(it);
+    while (vtkActor* actor = actors->GetNextActor(it))
+    {
+      if (vtkRefractionPass::IsGlass(actor) || !actor->GetVisibility())
+      {
+        continue;
+      }
+      std::string problem = OpaqueUnsupported(renderer, actor);
+      OpaqueWorldMesh opaque;
+      vtkSmartPointer<vtkPolyData> triangulated;
+      vtkPolyData* input = problem.empty()
+        ? vtkPolyData::SafeDownCast(actor->GetMapper()->GetInputDataObject(0, 0))
+        : nullptr;
+      if (input && input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+      {
+        continue; // points or lines only: nothing a ray can meet
+      }
+      if (input &&
+        !TriangulateToWorld(actor, input,
+          actor->GetProperty()->GetInterpolation() != VTK_FLAT, opaque.Geometry, triangulated,
+          problem))
+      {
+        input = nullptr;
+      }
+      if (!input)
+      {
+        if (skipped++ == 0)
+        {
+          firstSkipped = actor->GetClassName() + std::string(" ") + problem;
+        }
+        continue;
+      }
+      OpaqueColours(actor, triangulated, opaque);
+      opaqueMeshes.push_back(std::move(opaque));
+    }
+    if (skipped > 0)
+    {
+      vtkWarningMacro(<< skipped << " opaque actor(s) left out of the reference (the first: a "
+                      << firstSkipped
+                      << "); only opaque vtkActors with vtkPolyData surfaces are traced.");
+    }
   }
 
   // Embree works in float. Far from the origin (DESIGN.md section 6: coordinates offset by
@@ -490,6 +641,30 @@ bool vtkRefractionReference::Trace(vtkRenderer* renderer, int width, int height)
       world.Positions[i] = static_cast<float>(world.WorldPositions[i] - centre[i % 3]);
     }
     std::vector<double>().swap(world.WorldPositions);
+  }
+  for (OpaqueWorldMesh& opaque : opaqueMeshes)
+  {
+    WorldMesh& world = opaque.Geometry;
+    world.Positions.resize(world.WorldPositions.size());
+    for (size_t i = 0; i < world.WorldPositions.size(); ++i)
+    {
+      world.Positions[i] = static_cast<float>(world.WorldPositions[i] - centre[i % 3]);
+    }
+    std::vector<double>().swap(world.WorldPositions);
+  }
+  std::vector<rf_opaque_mesh> opaqueScene(opaqueMeshes.size());
+  for (size_t m = 0; m < opaqueMeshes.size(); ++m)
+  {
+    const OpaqueWorldMesh& opaque = opaqueMeshes[m];
+    rf_opaque_mesh& mesh = opaqueScene[m];
+    mesh.positions = opaque.Geometry.Positions.data();
+    mesh.normals = opaque.Geometry.Normals.empty() ? nullptr : opaque.Geometry.Normals.data();
+    mesh.vertex_count = opaque.Geometry.Positions.size() / 3;
+    mesh.triangles = opaque.Geometry.Triangles.data();
+    mesh.triangle_count = opaque.Geometry.Triangles.size() / 3;
+    mesh.colour_binding = opaque.Binding;
+    mesh.colours = opaque.Colours.empty() ? nullptr : opaque.Colours.data();
+    mesh.material = opaque.Material;
   }
 
   std::vector<rf_mesh> meshes(worldMeshes.size());
@@ -550,10 +725,37 @@ bool vtkRefractionReference::Trace(vtkRenderer* renderer, int width, int height)
   {
     vtkWarningMacro(<< environmentWarning);
   }
+  rf_background_environment background = {};
   if (environment.Use)
   {
     options.environment = rf_environment_map_lookup;
     options.environment_user = &environment.Map;
+  }
+  else if (this->EnvironmentMode == vtkRefractionPass::ENVIRONMENT_RENDERER)
+  {
+    // No cube map: the pass shows the renderer's background in the ray's direction.
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        background.world_to_view[3 * r + c] = rfCamera.view[4 * r + c];
+      }
+    }
+    std::copy(rfCamera.projection, rfCamera.projection + 16, background.projection);
+    renderer->GetBackground(background.bottom);
+    if (renderer->GetGradientBackground())
+    {
+      renderer->GetBackground2(background.top);
+    }
+    else
+    {
+      renderer->GetBackground(background.top);
+    }
+    options.environment = rf_background_environment_lookup;
+    options.environment_user = &background;
+    this->EnvironmentDescription = renderer->GetGradientBackground()
+      ? "the renderer's gradient background"
+      : "the renderer's background";
   }
   options.progress = [](double fraction, void* self) {
     static_cast<vtkRefractionReference*>(self)->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
@@ -571,7 +773,8 @@ bool vtkRefractionReference::Trace(vtkRenderer* renderer, int width, int height)
   this->InvokeEvent(vtkCommand::StartEvent);
   this->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
   const auto start = std::chrono::steady_clock::now();
-  status = rf_trace(meshes.data(), meshes.size(), &rfCamera, &options, &holder.Image);
+  status = rf_trace_scene(meshes.data(), meshes.size(), opaqueScene.data(), opaqueScene.size(),
+    &rfCamera, &options, &holder.Image);
   this->TraceSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (status == RF_OK)
@@ -598,6 +801,7 @@ bool vtkRefractionReference::Trace(vtkRenderer* renderer, int width, int height)
   auto tir = MakeArray("TIR", 1, count);
   auto hit = MakeArray("Hit", 1, count);
   auto flags = MakeArray("Flags", 1, count);
+  auto opaque = MakeArray("Opaque", 1, count);
   std::copy(img.colour, img.colour + 3 * count, colour->GetPointer(0));
   std::copy(img.coverage, img.coverage + count, coverage->GetPointer(0));
   std::copy(img.p1, img.p1 + 3 * count, p1->GetPointer(0));
@@ -610,17 +814,19 @@ bool vtkRefractionReference::Trace(vtkRenderer* renderer, int width, int height)
     tir->SetValue(i, img.tir[i]);
     hit->SetValue(i, img.hit[i]);
     flags->SetValue(i, img.hit[i] ? (img.tir[i] ? 2.f : 1.f) : 0.f);
+    opaque->SetValue(i, img.opaque[i]);
   }
   auto output = vtkSmartPointer<vtkImageData>::New();
   output->SetDimensions(width, height, 1);
   for (vtkFloatArray* array : { colour.Get(), coverage.Get(), p1.Get(), p2.Get(), t2.Get(), thickness.Get(),
-         bounces.Get(), tir.Get(), hit.Get(), flags.Get() })
+         bounces.Get(), tir.Get(), hit.Get(), flags.Get(), opaque.Get() })
   {
     output->GetPointData()->AddArray(array);
   }
   this->Output = output;
   this->NumberOfGlassActors = static_cast<int>(worldMeshes.size());
   this->NumberOfTriangles = triangles;
+  this->NumberOfOpaqueActors = static_cast<int>(opaqueMeshes.size());
   double diagonal = 0.0;
   for (int c = 0; c < 3; ++c)
   {
@@ -643,6 +849,11 @@ void vtkRefractionReference::PrintSelf(ostream& os, vtkIndent indent)
      << this->Absorption[2] << "\n";
   os << indent << "SamplesPerSide: " << this->SamplesPerSide << "\n";
   os << indent << "EnvironmentImage: " << this->EnvironmentImage.Get() << "\n";
+  os << indent << "EnvironmentMode: "
+     << (this->EnvironmentMode == vtkRefractionPass::ENVIRONMENT_RENDERER ? "renderer" : "builtin")
+     << "\n";
+  os << indent << "OpaqueActors: " << this->OpaqueActors << "\n";
+  os << indent << "NumberOfOpaqueActors: " << this->NumberOfOpaqueActors << "\n";
   os << indent << "EnvironmentDescription: " << this->EnvironmentDescription << "\n";
   os << indent << "GlassDiagonal: " << this->GlassDiagonal << "\n";
   os << indent << "NumberOfGlassActors: " << this->NumberOfGlassActors << "\n";

@@ -5,7 +5,8 @@
  * Collects the renderer's visible actors marked as glass (vtkRefractionPass::IsGlass), takes
  * each mapper's input polydata, triangulates it, moves points and point normals (when there
  * are any; else geometric normals are used) to world space with the actor's matrix, and
- * traces them with the reference tracer (rf_tracer.h, Embree 3) through the renderer's
+ * traces them, with the renderer's other visible actors as opaque surfaces around them
+ * (OpaqueActors), with the reference tracer (rf_tracer.h, Embree 3) through the renderer's
  * active camera: VTK's view matrix and projection matrix at the image's aspect ratio, the
  * matrices the GPU uses. Call it after the scene has been rendered (or after setting the
  * clipping range yourself): the camera's clipping range is used as it is.
@@ -15,15 +16,34 @@
  * (Fresnel splits at every interface, true TIR, Beer-Lambert absorption, MaxDepth
  * interfaces). The output image has, per pixel (row 0 at the bottom, as the pass's debug
  * image), the float point arrays "Colour" (3, linear RGB), "P1", "P2", "T2" (3, view space),
- * "Thickness", "Bounces", "TIR", "Hit", and "Flags" (0 no glass, 1 glass, 2 glass with
- * TIR), named as in vtkRefractionPass::GetDebugImage() where they overlap.
+ * "Thickness", "Bounces", "TIR", "Hit", "Flags" (0 no glass, 1 glass, 2 glass with
+ * TIR), named as in vtkRefractionPass::GetDebugImage() where they overlap, and "Opaque" (1
+ * where an opaque actor is seen in front of any glass: Flags 0, Colour its colour).
+ *
+ * Opaque actors (OpaqueActors, on by default): every visible non-glass vtkActor of the
+ * renderer with a vtkPolyData surface and opacity 1 stops the rays that meet it: a primary
+ * ray (the pixel is then not glass), the rays leaving the glass and the Fresnel reflections
+ * (in both modes), with the colour VTK draws it with the renderer's default headlight
+ * (rf_opaque_material: ambient + diffuse |N.z| + specular |N.z|^power along the view axis,
+ * two-sided; the plain ambient + diffuse colour with lighting off; the mapper's scalar
+ * colours, per point interpolated or per cell flat, in place of the ambient and diffuse
+ * colours). Colours are the 8-bit framebuffer's values as fractions (no gamma), what the
+ * pass captures and shows through the glass. Not reproduced: textures, other lights than
+ * the default headlight (a light kit, positional lights), cell normals, scalar colours
+ * interpolated before mapping (InterpolateScalarsBeforeMapping), field-data colours, edges,
+ * PBR interpolation, and the rasterizer's per-fragment normal interpolation beyond
+ * barycentric interpolation of the point normals (Flat interpolation uses the triangle's
+ * normal, as VTK does). Actors that are translucent, drawn as points or wireframe, part of an
+ * assembly (vtkAxesActor) or without polydata are left out with one warning per Trace.
  *
  * The environment is the one the pass samples: the renderer's environment texture when it
  * is a cube map (a vtkEquirectangularToCubeMapTexture is resampled from its lat-long input
  * into a cube of its CubeMapSize, as VTK renders it; a vtkTexture with CubeMapOn is read
  * from its six inputs), looked up through the renderer's EnvironmentUp and
- * EnvironmentRight exactly as the shader does (rf_environment_map.h); otherwise the
- * built-in one (rf_builtin_environment, the pass's fallback). SetEnvironmentImage gives a
+ * EnvironmentRight exactly as the shader does (rf_environment_map.h); otherwise what
+ * EnvironmentMode says the pass used: the built-in one (rf_builtin_environment) or the
+ * renderer's background, solid or gradient, in the ray's direction exactly as the pass's
+ * shader computes it (rf_background_environment_lookup). SetEnvironmentImage gives a
  * lat-long image instead, sampled directly (the environment itself, without the cube map's
  * resampling). Texel values are used as they are (floats raw, 8 and 16 bit normalized,
  * 8 bit sRGB decoded when the texture says so), as a texture with direct scalars is.
@@ -116,6 +136,28 @@ public:
   vtkImageData* GetEnvironmentImage();
   ///@}
 
+  ///@{
+  /**
+   * The environment without a cube map, as the pass's EnvironmentMode:
+   * vtkRefractionPass::ENVIRONMENT_RENDERER (0) the renderer's background (solid or
+   * gradient), vtkRefractionPass::ENVIRONMENT_BUILTIN (1, the default, what the reference
+   * always used) the built-in sky and ground. Match a pass with
+   * SetEnvironmentMode(pass->GetEnvironmentMode()) (the pass defaults to the renderer's).
+   */
+  vtkSetClampMacro(EnvironmentMode, int, 0, 1);
+  vtkGetMacro(EnvironmentMode, int);
+  void SetEnvironmentModeToRenderer() { this->SetEnvironmentMode(0); }
+  void SetEnvironmentModeToBuiltin() { this->SetEnvironmentMode(1); }
+  ///@}
+
+  ///@{
+  /// Trace the renderer's visible non-glass actors as opaque surfaces (on by default; see
+  /// the class comment for what is reproduced). Off: glass alone, over the environment.
+  vtkSetMacro(OpaqueActors, bool);
+  vtkGetMacro(OpaqueActors, bool);
+  vtkBooleanMacro(OpaqueActors, bool);
+  ///@}
+
   /// What the last Trace looked the environment up in, in words.
   const char* GetEnvironmentDescription() { return this->EnvironmentDescription.c_str(); }
 
@@ -141,6 +183,8 @@ public:
   vtkGetMacro(GlassDiagonal, double);
   /// Glass actors and triangles last traced.
   vtkGetMacro(NumberOfGlassActors, int);
+  /// Opaque actors last traced.
+  vtkGetMacro(NumberOfOpaqueActors, int);
   vtkGetMacro(NumberOfTriangles, vtkIdType);
   /// Wall-clock seconds of the last trace (BVH build and rays; not the mesh collection).
   vtkGetMacro(TraceSeconds, double);
@@ -157,6 +201,9 @@ protected:
   double Absorption[3] = { 0.0, 0.0, 0.0 };
   int SamplesPerSide = 1;
   vtkSmartPointer<vtkImageData> EnvironmentImage;
+  int EnvironmentMode = 1; // vtkRefractionPass::ENVIRONMENT_BUILTIN
+  bool OpaqueActors = true;
+  int NumberOfOpaqueActors = 0;
   std::string EnvironmentDescription = "none traced yet";
 
   double GlassDiagonal = 0.0;

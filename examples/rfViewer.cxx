@@ -18,6 +18,8 @@
 #include <vtkBoundingBox.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
+#include <vtkAppendPolyData.h>
+#include <vtkCellData.h>
 #include <vtkConeSource.h>
 #include <vtkContourFilter.h>
 #include <vtkDataSet.h>
@@ -26,10 +28,13 @@
 #include <vtkImageAppend.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
+#include <vtkIntArray.h>
 #include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkLookupTable.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
+#include <vtkPlaneSource.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -148,6 +153,7 @@ struct Scene
   vtkSmartPointer<vtkISRDistanceFilter> Distances;
   vtkSmartPointer<vtkActor> Glass;
   vtkSmartPointer<vtkActor> Cone;
+  vtkSmartPointer<vtkActor> Floor; // the demo's checkered floor and back wall
   vtkSmartPointer<vtkSkybox> Sky;
   vtkSmartPointer<vtkTextActor> Text;
   vtkSmartPointer<vtkRenderer> Renderer;
@@ -326,6 +332,75 @@ int BuildPipeline(const rfViewerOptions& o, const rfViewerSettings& s, Scene& sc
   return RF_VIEWER_OK;
 }
 
+// One checkered square of the demo's floor or wall: cell scalars 0 and 1 alternate.
+vtkSmartPointer<vtkPolyData> MakeCheckered(
+  const double origin[3], const double point1[3], const double point2[3], int cells1, int cells2)
+{
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetOrigin(origin[0], origin[1], origin[2]);
+  plane->SetPoint1(point1[0], point1[1], point1[2]);
+  plane->SetPoint2(point2[0], point2[1], point2[2]);
+  plane->SetResolution(cells1, cells2);
+  plane->Update();
+  auto squares = vtkSmartPointer<vtkPolyData>::New();
+  squares->ShallowCopy(plane->GetOutput());
+  vtkNew<vtkIntArray> parity;
+  parity->SetName("checker");
+  parity->SetNumberOfValues(static_cast<vtkIdType>(cells1) * cells2);
+  for (int j = 0; j < cells2; ++j)
+  {
+    for (int i = 0; i < cells1; ++i)
+    {
+      parity->SetValue(static_cast<vtkIdType>(j) * cells1 + i, (i + j) % 2);
+    }
+  }
+  squares->GetCellData()->SetScalars(parity);
+  return squares;
+}
+
+// The demo's stage: a checkered floor under the data and a wall behind it (the camera looks
+// down -z), opaque, so that the glass shows a scene bent through it, not only the background.
+vtkSmartPointer<vtkActor> MakeDemoStage(const double bounds[6])
+{
+  const double size = std::max(
+    { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-6 });
+  const double cell = size / 4.0;
+  const double x0 = bounds[0] - 2.5 * size;
+  const double x1 = bounds[1] + 2.5 * size;
+  const double y0 = bounds[2] - 0.15 * size;
+  const double z0 = bounds[4] - 1.2 * size;
+  const double z1 = bounds[5] + 1.5 * size;
+  const double y1 = bounds[2] + 0.55 * size;
+  const int across = static_cast<int>(std::lround((x1 - x0) / cell));
+  const double floorOrigin[3] = { x0, y0, z1 };
+  const double floorRight[3] = { x1, y0, z1 };
+  const double floorBack[3] = { x0, y0, z0 };
+  const double wallUp[3] = { x0, y1, z0 };
+  const double wallRight[3] = { x1, y0, z0 };
+  vtkNew<vtkAppendPolyData> stage;
+  stage->AddInputData(MakeCheckered(floorOrigin, floorRight, floorBack, across,
+    static_cast<int>(std::lround((z1 - z0) / cell))));
+  stage->AddInputData(MakeCheckered(floorBack, wallRight, wallUp, across,
+    static_cast<int>(std::lround((y1 - y0) / cell))));
+  vtkNew<vtkLookupTable> colours;
+  colours->SetNumberOfTableValues(2);
+  colours->SetTableValue(0, 0.85, 0.83, 0.78);
+  colours->SetTableValue(1, 0.22, 0.3, 0.42);
+  colours->SetTableRange(0.0, 1.0);
+  colours->Build();
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(stage->GetOutputPort());
+  mapper->SetLookupTable(colours);
+  mapper->SetScalarModeToUseCellData();
+  mapper->SetScalarRange(0.0, 1.0);
+  mapper->InterpolateScalarsBeforeMappingOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetAmbient(0.45);
+  actor->GetProperty()->SetDiffuse(0.6);
+  return actor;
+}
+
 int BuildScene(const rfViewerOptions& o, const rfViewerSettings& s, Scene& scene)
 {
   const int status = BuildPipeline(o, s, scene);
@@ -349,6 +424,15 @@ int BuildScene(const rfViewerOptions& o, const rfViewerSettings& s, Scene& scene
     scene.Cone->SetMapper(coneMapper);
     scene.Cone->GetProperty()->SetColor(0.9, 0.55, 0.1);
     scene.Renderer->AddActor(scene.Cone);
+    vtkDataSet* volume = vtkDataSet::SafeDownCast(scene.Source->GetOutputDataObject(0));
+    scene.Source->Update();
+    if (volume && volume->GetNumberOfPoints() > 0)
+    {
+      double bounds[6];
+      volume->GetBounds(bounds);
+      scene.Floor = MakeDemoStage(bounds);
+      scene.Renderer->AddActor(scene.Floor);
+    }
   }
   scene.Renderer->SetBackground(s.Background);
   if (s.Gradient)
@@ -551,7 +635,8 @@ vtkSmartPointer<vtkImageData> GrabMask(Scene& scene, vtkRenderWindow* window)
   const bool gradient = renderer->GetGradientBackground();
   std::vector<vtkProp*> hidden;
   for (vtkProp* prop : { static_cast<vtkProp*>(scene.Cone.Get()),
-         static_cast<vtkProp*>(scene.Sky.Get()), static_cast<vtkProp*>(scene.Text.Get()) })
+         static_cast<vtkProp*>(scene.Floor.Get()), static_cast<vtkProp*>(scene.Sky.Get()),
+         static_cast<vtkProp*>(scene.Text.Get()) })
   {
     if (prop && prop->GetVisibility())
     {

@@ -190,7 +190,7 @@ int rfViewerParseOptions(int argc, char* argv[], const std::vector<std::string>&
     { "--help", nullptr, nullptr, &o.Help,
       "This text." },
     { "--demo", "NAME", &o.Demo, nullptr,
-      "Built-in data instead of a file: metaballs (blobs that merge and split) or waves (the wave equation in a box, vtkWaveEquationSource), contoured every time step, beside an opaque cone." },
+      "Built-in data instead of a file: metaballs (blobs that merge and split) or waves (the wave equation in a box, vtkWaveEquationSource), contoured every time step, over an opaque checkered floor, before a low wall and beside an opaque cone." },
     { "--series", nullptr, nullptr, &o.Series,
       "The input file is one of a numbered series: play every file with the same name and another number." },
     { "--contour", "V[,V...]", &o.Contour, nullptr,

@@ -105,7 +105,10 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
   }
   if (frame.SceneRefraction)
   {
-    defines << "#define RF_SCENE_REFRACTION\n#define RF_SCENE_STEPS 24\n";
+    // March steps of the scene behind the glass: on the benchmark's scene (sphere before a
+    // checkerboard and axes, 512 px) 24 steps gave 16.1 dB against the reference, 16 steps
+    // 16.0 dB, 12 steps 15.5 dB.
+    defines << "#define RF_SCENE_REFRACTION\n#define RF_SCENE_STEPS 16\n";
   }
   if (debug)
   {

@@ -72,15 +72,6 @@ int rfRefractWithPolicy(vec3 incident, vec3 normal, float eta, out vec3 transmit
 uniform sampler2D rfSceneColor;
 uniform sampler2D rfSceneDepth;
 
-// The view-space distance -z of the scene at a texel of the captured depth (window depth).
-float rfSceneDistance(vec2 tc, out bool background)
-{
-  float windowDepth = texelFetch(rfSceneDepth, ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0)), 0).r;
-  background = windowDepth >= 1.0;
-  vec4 p = rfDCVC * vec4(tc * 2.0 - 1.0, windowDepth * 2.0 - 1.0, 1.0);
-  return -p.z / p.w;
-}
-
 // Nearby opaque geometry (Wyman 2005, seed 001, section 4): where the ray leaving the glass,
 // P + t T, first passes behind the opaque scene captured before the glass, its colour there.
 // The ray is marched in RF_SCENE_STEPS equal steps up to where it leaves the frustum, and a
@@ -89,6 +80,25 @@ float rfSceneDistance(vec2 tc, out bool background)
 // in front of the start (an opaque actor in front of the glass) are never hits: the ray must
 // come from in front of the scene point. False: the ray leaves the image or meets only the
 // background, and the environment stands in.
+// The march compares window depths, not view distances: the clip coordinates of P + t T are
+// linear in t (clipP + t clipT), and window depth is monotonic in distance along every pixel's
+// line of sight, so each step costs one fetch and no matrix; only the accepted hit is taken
+// back to view space for the gap test.
+// The texture coordinates of P + t T and (in windowDepth) its window depth.
+vec2 rfSceneSample(vec4 clipP, vec4 clipT, float t, out float windowDepth)
+{
+  vec4 c = clipP + t * clipT;
+  vec3 ndc = c.xyz / c.w;
+  windowDepth = 0.5 * ndc.z + 0.5;
+  return 0.5 * ndc.xy + 0.5;
+}
+
+// The window depth of the opaque scene captured at a texture coordinate (1: background).
+float rfSceneWindowDepth(vec2 tc)
+{
+  return texelFetch(rfSceneDepth, ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0)), 0).r;
+}
+
 bool rfSceneAlong(vec3 P, vec3 T, out vec3 colour)
 {
   colour = vec3(0.0);
@@ -97,19 +107,21 @@ bool rfSceneAlong(vec3 P, vec3 T, out vec3 colour)
   {
     return false;
   }
+  vec4 clipP = rfVCDC * vec4(P, 1.0);
+  vec4 clipT = rfVCDC * vec4(T, 0.0);
   float dt = tEnd / float(RF_SCENE_STEPS);
   bool wasInFront = false;
-  bool background;
   for (int i = 0; i <= RF_SCENE_STEPS; ++i)
   {
-    vec3 Q = P + (float(i) * dt) * T;
-    vec2 tc = rfProjectToTexture(Q);
+    float depth;
+    vec2 tc = rfSceneSample(clipP, clipT, float(i) * dt, depth);
     if (any(lessThan(tc, vec2(0.0))) || any(greaterThan(tc, vec2(1.0))))
     {
       return false;
     }
-    float scene = rfSceneDistance(tc, background);
-    bool inFront = background || -Q.z < scene;
+    float scene = rfSceneWindowDepth(tc);
+    // The background (window depth 1) is behind every point of the frustum.
+    bool inFront = scene >= 1.0 || depth < scene;
     if (wasInFront && !inFront)
     {
       float lo = float(i - 1) * dt;
@@ -117,9 +129,9 @@ bool rfSceneAlong(vec3 P, vec3 T, out vec3 colour)
       for (int j = 0; j < 6; ++j)
       {
         float mid = 0.5 * (lo + hi);
-        vec3 M = P + mid * T;
-        float sceneMid = rfSceneDistance(rfProjectToTexture(M), background);
-        if (background || -M.z < sceneMid)
+        float midDepth;
+        float sceneMid = rfSceneWindowDepth(rfSceneSample(clipP, clipT, mid, midDepth));
+        if (sceneMid >= 1.0 || midDepth < sceneMid)
         {
           lo = mid;
         }
@@ -128,13 +140,19 @@ bool rfSceneAlong(vec3 P, vec3 T, out vec3 colour)
           hi = mid;
         }
       }
-      vec3 H = P + hi * T;
-      vec2 hitTC = rfProjectToTexture(H);
-      float sceneHit = rfSceneDistance(hitTC, background);
-      if (!background && -H.z - sceneHit <= abs(dt * T.z) + 1e-4 * sceneHit)
+      float hitDepth;
+      vec2 hitTC = rfSceneSample(clipP, clipT, hi, hitDepth);
+      float sceneHit = rfSceneWindowDepth(hitTC);
+      if (sceneHit < 1.0)
       {
-        colour = textureLod(rfSceneColor, hitTC, 0.0).rgb;
-        return true;
+        vec4 s = rfDCVC * vec4(hitTC * 2.0 - 1.0, sceneHit * 2.0 - 1.0, 1.0);
+        float sceneDistance = -s.z / s.w;
+        vec3 H = P + hi * T;
+        if (-H.z - sceneDistance <= abs(dt * T.z) + 1e-4 * sceneDistance)
+        {
+          colour = textureLod(rfSceneColor, hitTC, 0.0).rgb;
+          return true;
+        }
       }
     }
     wasInFront = inFront;

@@ -1198,7 +1198,8 @@ vtkSmartPointer<vtkTexture> MakeEnvironment(
 {
   if (name == "builtin")
   {
-    description = "the pass's built-in environment";
+    description = "the pass's built-in environment (the scene mesh: the renderer's gradient "
+                  "background, which the pass and the reference then use)";
     return nullptr;
   }
   vtkSmartPointer<vtkImageData> image;

@@ -111,6 +111,7 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
      << (this->DepthRangeMode == DEPTH_RANGE_REDUCTION ? "reduction" : "bounds") << "\n";
   os << indent << "TIRPolicy: " << (this->TIRPolicy == TIR_CLAMP ? "clamp" : "reflect") << "\n";
   os << indent << "Fresnel: " << this->Fresnel << "\n";
+  os << indent << "AntiAliasing: " << this->AntiAliasing << "\n";
   os << indent << "EnvironmentMode: "
      << (this->EnvironmentMode == ENVIRONMENT_RENDERER ? "renderer" : "builtin") << "\n";
   os << indent << "SceneRefraction: " << this->SceneRefraction << "\n";
@@ -399,6 +400,7 @@ void vtkRefractionPass::RenderGlass(
     this->ThinSheetThickness);
   const bool dataColour = this->Materials->GetDataColour();
   wanted[vtkRefractionTargets::FRONT_COLOR] = dataColour;
+  wanted[vtkRefractionTargets::CORNER_COLOR] = this->AntiAliasing;
   wanted[vtkRefractionTargets::DEBUG_0] = this->DebugOutput;
   wanted[vtkRefractionTargets::DEBUG_1] = this->DebugOutput;
   this->Targets->Update(renWin, this->Width, this->Height, wanted, reduction);

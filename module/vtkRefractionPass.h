@@ -278,6 +278,20 @@ public:
 
   ///@{
   /**
+   * Anti-aliasing of the glass (off by default, as VTK's own FXAA and multisampling are):
+   * the refraction is shaded at the pixels' corners instead of their centres (one ray per
+   * pixel, as many as without it, each meeting the glass where the G-buffer interpolated at
+   * the corner puts the surface) and each pixel averages its four corners: four rays per
+   * pixel for the price of one, plus a resolve stage. At the silhouette the share of a
+   * pixel's corners on the glass blends it over the scene. Costs one RGBA16F target.
+   */
+  vtkSetMacro(AntiAliasing, bool);
+  vtkGetMacro(AntiAliasing, bool);
+  vtkBooleanMacro(AntiAliasing, bool);
+  ///@}
+
+  ///@{
+  /**
    * Debug output: when on, every render also writes, per pixel of the glass, the exit point
    * P2 (view space), the exit direction T2 (view space) and the thickness |P2 - P1| into
    * GetDebugImage(): point arrays "P2" (3), "T2" (3), "Thickness" (1) and "Flags" (1: 0 no
@@ -343,6 +357,7 @@ protected:
   int DepthRangeMode = DEPTH_RANGE_REDUCTION;
   int TIRPolicy = TIR_CLAMP;
   bool Fresnel = true;
+  bool AntiAliasing = false;
   bool DebugOutput = false;
   bool AdaptiveSearch = false;
   bool SecantRefinement = true;

@@ -61,6 +61,7 @@ void vtkRefractionShadeStage::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Shading program: " << (this->Shade ? "built" : "none") << "\n";
   os << indent << "Debug program: " << (this->Debug ? "built" : "none") << "\n";
+  os << indent << "Resolve program: " << (this->ResolveQuad ? "built" : "none") << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -109,6 +110,10 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
     // checkerboard and axes, 512 px) 24 steps gave 16.1 dB against the reference, 16 steps
     // 16.0 dB, 12 steps 15.5 dB.
     defines << "#define RF_SCENE_REFRACTION\n#define RF_SCENE_STEPS 16\n";
+  }
+  if (settings->GetAntiAliasing() && !debug)
+  {
+    defines << "#define RF_CORNER_SAMPLES\n";
   }
   if (debug)
   {
@@ -238,19 +243,96 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
   const std::vector<float>& materialIOR, const std::vector<float>& materialSheet)
 {
   vtkOpenGLState* ostate = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
-  // The glass is opaque: its colour replaces the scene's, its depth goes into the scene's
-  // depth buffer, and the depth test keeps the glass behind opaque actors hidden.
+  // The glass is opaque: its colour replaces the scene's (with anti-aliasing, blends over it
+  // at the silhouette), its depth goes into the scene's depth buffer, and the depth test
+  // keeps the glass behind opaque actors hidden.
   vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
   vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
   vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
   vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
   vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  vtkTextureObject* corners = targets->Get(vtkRefractionTargets::CORNER_COLOR);
+  if (!settings->GetAntiAliasing() || !corners)
+  {
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_LEQUAL);
+    ostate->vtkglDepthMask(GL_TRUE);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglDisable(GL_BLEND);
+    this->Draw(ren, method, settings, targets, frame, materialIOR, materialSheet, false);
+    return;
+  }
+  // Anti-aliasing: the refraction at every pixel corner into the corner target, then each
+  // pixel of the glass averages its corners over the scene.
+  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
+  fbo->SaveCurrentBindingsAndBuffers();
+  fbo->Bind();
+  fbo->AddColorAttachment(0, corners);
+  fbo->RemoveDepthAttachment();
+  fbo->ActivateDrawBuffers(1);
+  {
+    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+    ostate->vtkglViewport(
+      0, 0, static_cast<int>(corners->GetWidth()), static_cast<int>(corners->GetHeight()));
+    ostate->vtkglScissor(
+      0, 0, static_cast<int>(corners->GetWidth()), static_cast<int>(corners->GetHeight()));
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    this->Draw(ren, method, settings, targets, frame, materialIOR, materialSheet, false);
+  }
+  fbo->UnBind();
+  fbo->RestorePreviousBindingsAndBuffers();
+  this->Resolve(ren, targets);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionShadeStage::Resolve(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets)
+{
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  if (!this->ResolveQuad)
+  {
+    this->ResolveQuad.reset(new vtkOpenGLQuadHelper(renWin,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), rfResolveFSSource, ""));
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(this->ResolveQuad->Program);
+  }
+  vtkShaderProgram* program = this->ResolveQuad->Program;
+  if (!program || !program->GetCompiled())
+  {
+    vtkErrorMacro("Could not build the anti-aliasing resolve shader; the glass is not drawn.");
+    return;
+  }
+  vtkTextureObject* textures[3] = { targets->Get(vtkRefractionTargets::FRONT_SURFACE),
+    targets->Get(vtkRefractionTargets::FRONT_DEPTH),
+    targets->Get(vtkRefractionTargets::CORNER_COLOR) };
+  const char* names[3] = { "rfFrontSurface", "rfFrontDepth", "rfCorners" };
+  for (int i = 0; i < 3; ++i)
+  {
+    textures[i]->Activate();
+    program->SetUniformi(names[i], textures[i]->GetTextureUnit());
+  }
+  const float size[2] = { static_cast<float>(textures[2]->GetWidth()),
+    static_cast<float>(textures[2]->GetHeight()) };
+  program->SetUniform2f("rfSize", size);
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_LEQUAL);
   ostate->vtkglDepthMask(GL_TRUE);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  ostate->vtkglDisable(GL_BLEND);
-  this->Draw(ren, method, settings, targets, frame, materialIOR, materialSheet, false);
+  // The share of the pixel's corners on the glass (alpha) over what is behind it.
+  ostate->vtkglEnable(GL_BLEND);
+  ostate->vtkglBlendFuncSeparate(
+    GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  this->ResolveQuad->Render();
+  for (vtkTextureObject* texture : textures)
+  {
+    texture->Deactivate();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -341,5 +423,10 @@ void vtkRefractionShadeStage::ReleaseGraphicsResources(vtkWindow* w)
       (*program)->Quad->ReleaseGraphicsResources(w);
     }
     program->reset();
+  }
+  if (this->ResolveQuad)
+  {
+    this->ResolveQuad->ReleaseGraphicsResources(w);
+    this->ResolveQuad.reset();
   }
 }

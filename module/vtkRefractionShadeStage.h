@@ -6,7 +6,8 @@
  * the method reads (by sampler name), the environment and the camera, and draws a full-screen
  * quad (vtkOpenGLQuadHelper) into the framebuffer bound now, writing the glass's colour and
  * depth; or, for the debug output, P2/T2/thickness/flags into two float targets read back as
- * a vtkImageData. GL state goes through vtkOpenGLState and is restored afterwards.
+ * a vtkImageData. With anti-aliasing it shades the pixels' corners into the corner target
+ * and a resolve quad (shaders/rfResolveFS.glsl) averages them into the framebuffer. GL state goes through vtkOpenGLState and is restored afterwards.
  */
 #ifndef vtkRefractionShadeStage_h
 #define vtkRefractionShadeStage_h
@@ -85,8 +86,11 @@ private:
     vtkRefractionTargets* targets, const Frame& frame, const std::vector<float>& materialIOR,
     const std::vector<float>& materialSheet, bool debug);
 
+  // Anti-aliasing: each pixel averages the corner target over the scene.
+  void Resolve(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets);
   std::unique_ptr<Program> Shade;
   std::unique_ptr<Program> Debug;
+  std::unique_ptr<vtkOpenGLQuadHelper> ResolveQuad;
 };
 
 #endif

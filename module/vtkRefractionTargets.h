@@ -39,6 +39,8 @@ public:
     BACK_Z,            ///< DEPTH32F: the depth test of the back capture
     SCENE_COLOR,       ///< RGBA8: the opaque scene (and SSP's refraction mask in alpha)
     SCENE_DEPTH,       ///< DEPTH32F: the opaque scene's depth (window coordinates)
+    CORNER_COLOR,      ///< RGBA16F: anti-aliasing, the glass's colour at each pixel's lower-left
+                       ///< corner, alpha 1 where the corner lies on the glass
     DEBUG_0,           ///< RGBA32F: P2 and |P2 - P1|
     DEBUG_1,           ///< RGBA32F: T2 and the flags
     TARGET_COUNT

@@ -179,9 +179,129 @@ vec3 rfBehind(vec3 P, vec3 T)
 
 //VTK::Output::Dec
 
+// One ray through texture coordinate tc that meets the glass (material index material) at
+// view depth -z = depth with the viewer-facing unit normal N1: its colour, and for the debug
+// output the exit point, exit direction and TIR flags.
+struct rfRay
+{
+  vec3 colour;
+  vec3 P1;
+  vec3 P2;
+  vec3 T2;
+  int tir;
+};
+
+rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material)
+{
+  rfRay ray;
+  float ior = rfMaterialIOR[material];
+  float sheet = rfMaterialSheet[material];
+  vec3 P = rfPositionFromDepth(tc, depth);
+  vec3 V = rfViewDirection(P);
+  float etaIn = 1.0 / ior;
+  vec3 T1;
+  // IOR < 1 (a bubble): beyond the critical angle the light cannot enter and is totally
+  // reflected outside (flag 3); the clamp policy is for the exit only.
+  bool tirIn = rfRefractWithPolicy(V, N1, etaIn, T1) == 1;
+  vec3 T2 = tirIn ? reflect(V, N1) : T1;
+  vec3 P2 = P;
+  int tir = tirIn ? 2 : 0;
+  vec3 N2;
+  if (!tirIn && sheet > 0.0)
+  {
+    // A thin sheet: a slab of thickness sheet. The ray crosses it along T1 and leaves
+    // parallel to where it came from, shifted; there is no back surface to search.
+    P2 = P + (sheet / max(-dot(T1, N1), 1e-3)) * T1;
+    T2 = V;
+  }
+  else if (!tirIn && rfFindExit(P, V, N1, T1, etaIn, P2, N2))
+  {
+    tir = rfRefractWithPolicy(T1, -normalize(N2), ior, T2);
+  }
+  ray.P1 = P;
+  ray.P2 = P2;
+  ray.T2 = T2;
+  ray.tir = tir;
+#ifdef RF_DEBUG_OUTPUT
+  ray.colour = vec3(0.0);
+#else
+#ifdef RF_FRESNEL
+  float F = rfFresnelWeight(-dot(V, N1), etaIn);
+#else
+  float F = 0.0;
+#endif
+  vec3 transmitted = rfTransmittedColour(tc, N1, T1, P2, T2);
+#ifdef RF_TINT
+  // Beer-Lambert: the data's colour is what light keeps after rfAbsorptionDistance inside the
+  // glass; along the measured path |P2 - P1| it keeps colour^(|P2 - P1| / distance). Where no
+  // exit was found (SIR, TIR at the entry) the path is taken as that distance.
+  vec3 tint = texelFetch(rfFrontColour, rfPixel, 0).rgb;
+  float path = length(P2 - P) > 0.0 ? length(P2 - P) : rfAbsorptionDistance;
+  transmitted *= pow(max(tint, vec3(1.0 / 255.0)), vec3(path / rfAbsorptionDistance));
+#endif
+  ray.colour = F * rfEnvironment(reflect(V, N1)) + (1.0 - F) * transmitted;
+#endif
+  return ray;
+}
+
+#ifdef RF_CORNER_SAMPLES
+// Anti-aliasing (vtkRefractionPass::SetAntiAliasing): this program shades the lower-left
+// corner of each pixel, where four texels of the G-buffer meet, into the corner target; the
+// resolve stage (rfResolveFS.glsl) averages each pixel's four corners. The corner lies on the
+// glass where at least two of its texels hold the glass of the nearest of them; its depth and
+// normal are theirs, averaged.
+vec4 rfCornerSample()
+{
+  vec4 texels[4];
+  int nearest = -1;
+  for (int k = 0; k < 4; ++k)
+  {
+    ivec2 texel = rfPixel + ivec2(k % 2, k / 2) - 1;
+    bool inside = all(greaterThanEqual(texel, ivec2(0))) &&
+      all(lessThan(texel, ivec2(rfViewport.zw)));
+    texels[k] = inside ? texelFetch(rfFrontSurface, texel, 0) : vec4(0.0);
+    if (texels[k].w > 0.5 && (nearest < 0 || texels[k].z < texels[nearest].z))
+    {
+      nearest = k;
+    }
+  }
+  if (nearest < 0)
+  {
+    return vec4(0.0);
+  }
+  float material = floor(texels[nearest].w + 0.5);
+  vec3 normal = vec3(0.0);
+  float depth = 0.0;
+  float count = 0.0;
+  for (int k = 0; k < 4; ++k)
+  {
+    if (texels[k].w > 0.5 && floor(texels[k].w + 0.5) == material)
+    {
+      normal += rf_oct_decode(texels[k].xy);
+      depth += texels[k].z;
+      count += 1.0;
+    }
+  }
+  if (count < 2.0 || !(dot(normal, normal) > 0.0))
+  {
+    return vec4(0.0);
+  }
+  int index = clamp(int(material) - 1, 0, RF_MAX_MATERIALS - 1);
+  vec3 colour = rfShadeRay(vec2(rfPixel) / rfViewport.zw, normalize(normal), depth / count, index).colour;
+#ifdef RF_TINT
+  vec4 data = texelFetch(rfFrontColour, rfPixel, 0);
+  colour = mix(colour, data.rgb, data.a);
+#endif
+  return vec4(colour, 1.0);
+}
+#endif
+
 void main()
 {
   rfPixel = ivec2(texCoord * rfViewport.zw);
+#if defined(RF_CORNER_SAMPLES) && !defined(RF_DEBUG_OUTPUT)
+  gl_FragData[0] = rfCornerSample();
+#else
   vec4 rfFront = texelFetch(rfFrontSurface, rfPixel, 0);
   if (!(rfFront.w > 0.5))
   {
@@ -189,55 +309,18 @@ void main()
   }
   gl_FragDepth = texelFetch(rfFrontDepth, rfPixel, 0).r;
   int rfMaterial = clamp(int(rfFront.w + 0.5) - 1, 0, RF_MAX_MATERIALS - 1);
-  float rfIOR = rfMaterialIOR[rfMaterial];
-  float rfSheet = rfMaterialSheet[rfMaterial];
-  vec3 rfP = rfPositionFromDepth(texCoord, rfFront.z);
-  vec3 rfV = rfViewDirection(rfP);
-  vec3 rfN1 = rf_oct_decode(rfFront.xy);
-  float rfEtaIn = 1.0 / rfIOR;
-  vec3 rfT1;
-  // IOR < 1 (a bubble): beyond the critical angle the light cannot enter and is totally
-  // reflected outside (flag 3); the clamp policy is for the exit only.
-  bool rfTIRIn = rfRefractWithPolicy(rfV, rfN1, rfEtaIn, rfT1) == 1;
-  vec3 rfT2 = rfTIRIn ? reflect(rfV, rfN1) : rfT1;
-  vec3 rfP2 = rfP;
-  int rfTIR = rfTIRIn ? 2 : 0;
-  vec3 rfN2;
-  if (!rfTIRIn && rfSheet > 0.0)
-  {
-    // A thin sheet: a slab of thickness rfSheet. The ray crosses it along T1 and leaves
-    // parallel to where it came from, shifted; there is no back surface to search.
-    rfP2 = rfP + (rfSheet / max(-dot(rfT1, rfN1), 1e-3)) * rfT1;
-    rfT2 = rfV;
-  }
-  else if (!rfTIRIn && rfFindExit(rfP, rfV, rfN1, rfT1, rfEtaIn, rfP2, rfN2))
-  {
-    rfTIR = rfRefractWithPolicy(rfT1, -normalize(rfN2), rfIOR, rfT2);
-  }
+  rfRay rfCentre = rfShadeRay(texCoord, rf_oct_decode(rfFront.xy), rfFront.z, rfMaterial);
 #ifdef RF_DEBUG_OUTPUT
-  gl_FragData[0] = vec4(rfP2, length(rfP2 - rfP));
-  gl_FragData[1] = vec4(rfT2, 1.0 + float(rfTIR));
+  gl_FragData[0] = vec4(rfCentre.P2, length(rfCentre.P2 - rfCentre.P1));
+  gl_FragData[1] = vec4(rfCentre.T2, 1.0 + float(rfCentre.tir));
 #else
-#ifdef RF_FRESNEL
-  float rfF = rfFresnelWeight(-dot(rfV, rfN1), rfEtaIn);
-#else
-  float rfF = 0.0;
-#endif
-  vec3 rfTransmitted = rfTransmittedColour(texCoord, rfN1, rfT1, rfP2, rfT2);
-#ifdef RF_TINT
-  // Beer-Lambert: the data's colour is what light keeps after rfAbsorptionDistance inside the
-  // glass; along the measured path |P2 - P1| it keeps colour^(|P2 - P1| / distance). Where no
-  // exit was found (SIR, TIR at the entry) the path is taken as that distance.
-  vec4 rfDataColour = texelFetch(rfFrontColour, rfPixel, 0);
-  vec3 rfTint = rfDataColour.rgb;
-  float rfPath = length(rfP2 - rfP) > 0.0 ? length(rfP2 - rfP) : rfAbsorptionDistance;
-  rfTransmitted *= pow(max(rfTint, vec3(1.0 / 255.0)), vec3(rfPath / rfAbsorptionDistance));
-#endif
-  vec3 rfColour = rfF * rfEnvironment(reflect(rfV, rfN1)) + (1.0 - rfF) * rfTransmitted;
+  vec3 rfColour = rfCentre.colour;
 #ifdef RF_TINT
   // EdgeVisibility: the edges over the glass, as VTK draws them over a surface.
+  vec4 rfDataColour = texelFetch(rfFrontColour, rfPixel, 0);
   rfColour = mix(rfColour, rfDataColour.rgb, rfDataColour.a);
 #endif
   gl_FragData[0] = vec4(rfColour, 1.0);
+#endif
 #endif
 }

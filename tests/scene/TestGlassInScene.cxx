@@ -652,9 +652,74 @@ int ReferenceNG(const std::string& outDir)
 }
 }
 
+// Anti-aliasing (vtkRefractionPass::SetAntiAliasing) against the pixel-averaged truth: the
+// two-interface reference at 4 x 4 rays per pixel, over the built-in environment (its
+// checkered ground, squeezed by the ball lens, aliases) and a black background (which the
+// reference's sub-samples that miss the glass take). On the glass pixels the corner samples
+// must come closer to that truth than the pixel centres do.
+int AntiAliasing()
+{
+  Scene scene(1.5);
+  scene.Pass->SetEnvironmentModeToBuiltin();
+  scene.Renderer->GradientBackgroundOff();
+  scene.Renderer->SetBackground(0.0, 0.0, 0.0);
+  auto aliased = scene.Render();
+  scene.Pass->AntiAliasingOn();
+  auto smooth = scene.Render();
+  scene.Pass->DebugOutputOn();
+  scene.Render();
+  vtkNew<vtkImageData> debug;
+  debug->DeepCopy(scene.Pass->GetDebugImage());
+  scene.Pass->DebugOutputOff();
+  RF_REQUIRE(scene.Pass->GetTextureBytes() > 0, "no targets");
+
+  vtkNew<vtkRefractionReference> reference;
+  reference->SetMode(vtkRefractionReference::TWO_INTERFACE);
+  reference->SetEnvironmentMode(scene.Pass->GetEnvironmentMode());
+  reference->SetSamplesPerSide(4);
+  RF_REQUIRE(reference->Trace(scene.Renderer, kSize, kSize), "the reference failed");
+  vtkDataArray* colour = reference->GetOutput()->GetPointData()->GetArray("Colour");
+  vtkDataArray* flags = reference->GetOutput()->GetPointData()->GetArray("Flags");
+  vtkDataArray* passFlags = debug->GetPointData()->GetArray("Flags");
+  RF_REQUIRE(colour && flags && passFlags, "missing arrays");
+  const size_t count = static_cast<size_t>(kSize) * kSize;
+  std::vector<float> truth(3 * count);
+  std::vector<unsigned char> glass(count);
+  size_t glassCount = 0;
+  for (size_t i = 0; i < count; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      truth[3 * i + c] = static_cast<float>(colour->GetComponent(i, c));
+    }
+    glass[i] = flags->GetComponent(i, 0) > 0.5 && passFlags->GetComponent(i, 0) > 0.5;
+    glassCount += glass[i];
+  }
+  RF_REQUIRE(glassCount > 3000, "too few glass pixels: %zu", glassCount);
+  const std::vector<float> off = ToFloat(aliased);
+  const std::vector<float> on = ToFloat(smooth);
+  double psnrOff = 0.0;
+  double psnrOn = 0.0;
+  RF_REQUIRE(rf_psnr(off.data(), truth.data(), count, 3, glass.data(), &psnrOff) == RF_OK &&
+      rf_psnr(on.data(), truth.data(), count, 3, glass.data(), &psnrOn) == RF_OK,
+    "no PSNR");
+  std::printf("anti_aliasing: %zu glass pixels, PSNR against the 4x4 reference %.2f dB with "
+              "anti-aliasing, %.2f dB without\n",
+    glassCount, psnrOn, psnrOff);
+  // Measured on llvmpipe at 160 x 160: 25.1 dB with, 23.05 dB without (the same picture twice
+  // gains 0, so the test fails where the setting changes nothing).
+  RF_REQUIRE(psnrOn > psnrOff + 1.0, "anti-aliasing gains %.2f dB (at least 1 expected)",
+    psnrOn - psnrOff);
+  return EXIT_SUCCESS;
+}
+
 int main(int argc, char* argv[])
 {
   const std::string name = argc > 1 ? argv[1] : "";
+  if (name == "anti_aliasing")
+  {
+    return AntiAliasing();
+  }
   if (name == "reference_ng")
   {
     return ReferenceNG(argc > 2 ? argv[2] : ".");

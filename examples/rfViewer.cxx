@@ -467,6 +467,7 @@ int BuildScene(const rfViewerOptions& o, const rfViewerSettings& s, Scene& scene
   }
   scene.Pass->SetMethod(s.Method);
   scene.Pass->SetSearchSteps(s.Steps);
+  scene.Pass->SetAntiAliasing(o.AntiAliasing);
   scene.Renderer->SetPass(scene.Pass);
 
   scene.Text = vtkSmartPointer<vtkTextActor>::New();
@@ -490,6 +491,10 @@ void SetStatus(Scene& scene, double milliseconds, int timeIndex)
   if (scene.Pass->GetMethod() == vtkRefractionPass::DIR)
   {
     line << "  " << scene.Pass->GetSearchSteps() << " steps";
+  }
+  if (scene.Pass->GetAntiAliasing())
+  {
+    line << "  AA";
   }
   line.precision(1);
   line << "  " << milliseconds << " ms";

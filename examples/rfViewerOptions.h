@@ -36,6 +36,7 @@ struct rfViewerOptions
   std::string Timing = "0";
   bool Interactive = false;
   bool NoText = false;
+  bool AntiAliasing = false;
   bool Masks = false;
   bool Help = false;
   bool EGL = false; // accepted for older scripts: headless rendering always tries EGL first

@@ -7,7 +7,8 @@
  * quad (vtkOpenGLQuadHelper) into the framebuffer bound now, writing the glass's colour and
  * depth; or, for the debug output, P2/T2/thickness/flags into two float targets read back as
  * a vtkImageData. With anti-aliasing it shades the pixels' corners into the corner target
- * and a resolve quad (shaders/rfResolveFS.glsl) averages them into the framebuffer. GL state goes through vtkOpenGLState and is restored afterwards.
+ * and a resolve quad (shaders/rfResolveFS.glsl) averages them into the framebuffer. GL state
+ * goes through vtkOpenGLState and is restored afterwards.
  */
 #ifndef vtkRefractionShadeStage_h
 #define vtkRefractionShadeStage_h

@@ -6,7 +6,8 @@
 // its depth, so the opaque scene's depth test keeps hidden glass hidden.
 // Defines set by the pass: RF_METHOD_{SIR,DIR,ISR,SSP}, RF_TIR_CLAMP, RF_FRESNEL,
 // RF_ENV_CUBEMAP or RF_ENV_BACKGROUND (else the built-in environment), RF_SCENE_REFRACTION,
-// RF_SCENE_STEPS, RF_TINT, RF_MAX_MATERIALS, RF_DEBUG_OUTPUT and the method's own.
+// RF_SCENE_STEPS, RF_TINT, RF_MAX_MATERIALS, RF_DEBUG_OUTPUT, RF_CORNER_SAMPLES (anti-aliasing:
+// the pixels' corners into the corner target instead of the pixels) and the method's own.
 in vec2 texCoord;
 uniform sampler2D rfFrontSurface;
 uniform sampler2D rfFrontDepth;
@@ -72,18 +73,6 @@ int rfRefractWithPolicy(vec3 incident, vec3 normal, float eta, out vec3 transmit
 uniform sampler2D rfSceneColor;
 uniform sampler2D rfSceneDepth;
 
-// Nearby opaque geometry (Wyman 2005, seed 001, section 4): where the ray leaving the glass,
-// P + t T, first passes behind the opaque scene captured before the glass, its colour there.
-// The ray is marched in RF_SCENE_STEPS equal steps up to where it leaves the frustum, and a
-// crossing (in front at one step, behind at the next) is bisected; a crossing with a depth
-// gap larger than the step's (the ray passing behind a silhouette) is not a hit. Scene points
-// in front of the start (an opaque actor in front of the glass) are never hits: the ray must
-// come from in front of the scene point. False: the ray leaves the image or meets only the
-// background, and the environment stands in.
-// The march compares window depths, not view distances: the clip coordinates of P + t T are
-// linear in t (clipP + t clipT), and window depth is monotonic in distance along every pixel's
-// line of sight, so each step costs one fetch and no matrix; only the accepted hit is taken
-// back to view space for the gap test.
 // The texture coordinates of P + t T and (in windowDepth) its window depth.
 vec2 rfSceneSample(vec4 clipP, vec4 clipT, float t, out float windowDepth)
 {
@@ -99,6 +88,18 @@ float rfSceneWindowDepth(vec2 tc)
   return texelFetch(rfSceneDepth, ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0)), 0).r;
 }
 
+// Nearby opaque geometry (Wyman 2005, seed 001, section 4): where the ray leaving the glass,
+// P + t T, first passes behind the opaque scene captured before the glass, its colour there.
+// The ray is marched in RF_SCENE_STEPS equal steps up to where it leaves the frustum, and a
+// crossing (in front at one step, behind at the next) is bisected; a crossing with a depth
+// gap larger than the step's (the ray passing behind a silhouette) is not a hit. Scene points
+// in front of the start (an opaque actor in front of the glass) are never hits: the ray must
+// come from in front of the scene point. False: the ray leaves the image or meets only the
+// background, and the environment stands in.
+// The march compares window depths, not view distances: the clip coordinates of P + t T are
+// linear in t (clipP + t clipT), and window depth is monotonic in distance along every pixel's
+// line of sight, so each step costs one fetch and no matrix; only the accepted hit is taken
+// back to view space for the gap test.
 bool rfSceneAlong(vec3 P, vec3 T, out vec3 colour)
 {
   colour = vec3(0.0);
@@ -287,7 +288,8 @@ vec4 rfCornerSample()
     return vec4(0.0);
   }
   int index = clamp(int(material) - 1, 0, RF_MAX_MATERIALS - 1);
-  vec3 colour = rfShadeRay(vec2(rfPixel) / rfViewport.zw, normalize(normal), depth / count, index).colour;
+  vec3 colour =
+    rfShadeRay(vec2(rfPixel) / rfViewport.zw, normalize(normal), depth / count, index).colour;
 #ifdef RF_TINT
   vec4 data = texelFetch(rfFrontColour, rfPixel, 0);
   colour = mix(colour, data.rgb, data.a);

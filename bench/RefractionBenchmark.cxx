@@ -18,6 +18,7 @@
 //
 // Rendering goes through EGL (no X server) unless --x11 is given or EGL is not available.
 #include "rf_metrics.h"
+#include "vtkCheckerboardSource.h"
 #include "vtkISRDistanceFilter.h"
 #include "vtkMetaballsSource.h"
 #include "vtkRefractionEGL.h"
@@ -30,7 +31,6 @@
 #include <vtkCamera.h>
 #include <vtkChartLegend.h>
 #include <vtkChartMatrix.h>
-#include <vtkCellData.h>
 #include <vtkChartXY.h>
 #include <vtkCleanPolyData.h>
 #include <vtkCommand.h>
@@ -51,7 +51,6 @@
 #include <vtkParametricFunctionSource.h>
 #include <vtkParametricTorus.h>
 #include <vtkPNGWriter.h>
-#include <vtkPlaneSource.h>
 #include <vtkPlot.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -403,28 +402,18 @@ std::vector<vtkSmartPointer<vtkActor>> MakeSurroundings()
   std::vector<vtkSmartPointer<vtkActor>> actors;
   const double z = -2.0;
   const double half = 1.25;
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-half, -half, z);
-  plane->SetPoint1(half, -half, z);
-  plane->SetPoint2(-half, half, z);
-  plane->SetResolution(8, 8);
-  plane->Update();
-  vtkNew<vtkPolyData> board;
-  board->DeepCopy(plane->GetOutput());
-  vtkNew<vtkFloatArray> parity;
-  parity->SetNumberOfTuples(board->GetNumberOfCells());
-  for (vtkIdType k = 0; k < board->GetNumberOfCells(); ++k)
-  {
-    parity->SetValue(k, static_cast<float>((k % 8 + k / 8) % 2)); // cells run along x first
-  }
-  board->GetCellData()->SetScalars(parity);
+  vtkNew<vtkCheckerboardSource> board;
+  board->SetOrigin(-half, -half, z);
+  board->SetPoint1(half, -half, z);
+  board->SetPoint2(-half, half, z);
+  board->SetResolution(8, 8);
   vtkNew<vtkLookupTable> table;
   table->SetNumberOfTableValues(2);
   table->SetTableValue(0, 0.95, 0.85, 0.3, 1.0);
   table->SetTableValue(1, 0.15, 0.1, 0.35, 1.0);
   table->SetTableRange(0.0, 1.0);
   vtkNew<vtkPolyDataMapper> boardMapper;
-  boardMapper->SetInputData(board);
+  boardMapper->SetInputConnection(board->GetOutputPort());
   boardMapper->SetLookupTable(table);
   boardMapper->SetScalarRange(0.0, 1.0);
   boardMapper->SetScalarModeToUseCellData();

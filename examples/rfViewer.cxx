@@ -4,6 +4,7 @@
 #include "rfViewer.h"
 #include "rfViewerOptions.h"
 
+#include "vtkCheckerboardSource.h"
 #include "vtkISRDistanceFilter.h"
 #include "vtkMetaballsSource.h"
 #include "vtkRefractionEGL.h"
@@ -19,7 +20,6 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkAppendPolyData.h>
-#include <vtkCellData.h>
 #include <vtkConeSource.h>
 #include <vtkContourFilter.h>
 #include <vtkDataSet.h>
@@ -28,13 +28,11 @@
 #include <vtkImageAppend.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
-#include <vtkIntArray.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkLookupTable.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
-#include <vtkPlaneSource.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
@@ -332,29 +330,18 @@ int BuildPipeline(const rfViewerOptions& o, const rfViewerSettings& s, Scene& sc
   return RF_VIEWER_OK;
 }
 
-// One checkered square of the demo's floor or wall: cell scalars 0 and 1 alternate.
+// One checkered rectangle of the demo's floor or wall.
 vtkSmartPointer<vtkPolyData> MakeCheckered(
   const double origin[3], const double point1[3], const double point2[3], int cells1, int cells2)
 {
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(origin[0], origin[1], origin[2]);
-  plane->SetPoint1(point1[0], point1[1], point1[2]);
-  plane->SetPoint2(point2[0], point2[1], point2[2]);
-  plane->SetResolution(cells1, cells2);
-  plane->Update();
+  vtkNew<vtkCheckerboardSource> board;
+  board->SetOrigin(origin[0], origin[1], origin[2]);
+  board->SetPoint1(point1[0], point1[1], point1[2]);
+  board->SetPoint2(point2[0], point2[1], point2[2]);
+  board->SetResolution(cells1, cells2);
+  board->Update();
   auto squares = vtkSmartPointer<vtkPolyData>::New();
-  squares->ShallowCopy(plane->GetOutput());
-  vtkNew<vtkIntArray> parity;
-  parity->SetName("checker");
-  parity->SetNumberOfValues(static_cast<vtkIdType>(cells1) * cells2);
-  for (int j = 0; j < cells2; ++j)
-  {
-    for (int i = 0; i < cells1; ++i)
-    {
-      parity->SetValue(static_cast<vtkIdType>(j) * cells1 + i, (i + j) % 2);
-    }
-  }
-  squares->GetCellData()->SetScalars(parity);
+  squares->ShallowCopy(board->GetOutput());
   return squares;
 }
 

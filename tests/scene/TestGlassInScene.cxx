@@ -21,6 +21,7 @@
 //                     background; PSNR on the glass pixels with scene refraction on, and
 //                     off (which must fail the same threshold); the opaque pixels as VTK
 //                     draws them; both pictures written as PNG to the output folder (argv[2])
+#include "vtkCheckerboardSource.h"
 #include "vtkRefractionPass.h"
 #include "vtkRefractionReference.h"
 #include "rf_metrics.h"
@@ -32,10 +33,8 @@
 #include <vtkCamera.h>
 #include <vtkConeSource.h>
 #include <vtkAppendPolyData.h>
-#include <vtkCellData.h>
 #include <vtkCubeSource.h>
 #include <vtkDataArray.h>
-#include <vtkFloatArray.h>
 #include <vtkLineSource.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
@@ -443,29 +442,18 @@ int DataColour()
 // through a two-colour lookup table (the mapper's scalar colours, flat per cell).
 vtkSmartPointer<vtkActor> Checkerboard(double z, double half)
 {
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetOrigin(-half, -half, z);
-  plane->SetPoint1(half, -half, z);
-  plane->SetPoint2(-half, half, z);
-  plane->SetResolution(8, 8);
-  plane->Update();
-  auto board = vtkSmartPointer<vtkPolyData>::New();
-  board->DeepCopy(plane->GetOutput());
-  vtkNew<vtkFloatArray> parity;
-  parity->SetName("parity");
-  parity->SetNumberOfTuples(board->GetNumberOfCells());
-  for (vtkIdType k = 0; k < board->GetNumberOfCells(); ++k)
-  {
-    parity->SetValue(k, static_cast<float>((k % 8 + k / 8) % 2)); // cells run along x first
-  }
-  board->GetCellData()->SetScalars(parity);
+  vtkNew<vtkCheckerboardSource> board;
+  board->SetOrigin(-half, -half, z);
+  board->SetPoint1(half, -half, z);
+  board->SetPoint2(-half, half, z);
+  board->SetResolution(8, 8);
   vtkNew<vtkLookupTable> table;
   table->SetNumberOfTableValues(2);
   table->SetTableValue(0, 0.95, 0.85, 0.3, 1.0);
   table->SetTableValue(1, 0.15, 0.1, 0.35, 1.0);
   table->SetTableRange(0.0, 1.0);
   vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(board);
+  mapper->SetInputConnection(board->GetOutputPort());
   mapper->SetLookupTable(table);
   mapper->SetScalarRange(0.0, 1.0);
   mapper->SetScalarModeToUseCellData();

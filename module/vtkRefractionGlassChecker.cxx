@@ -8,6 +8,7 @@
 #include "vtkPolyDataMapper.h"
 #include "vtkProp.h"
 #include "vtkPropCollection.h"
+#include "vtkProperty.h"
 #include "vtkRefractionPass.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
@@ -46,6 +47,7 @@ void vtkRefractionGlassChecker::SplitProps(
       }
       continue;
     }
+    this->CheckOpacity(prop);
     const int verdict = this->CheckGlassProp(prop);
     if (verdict == GLASS_AS_ORDINARY && others)
     {
@@ -76,7 +78,33 @@ void vtkRefractionGlassChecker::SplitProps(
   if (this->GlassChecks.size() > 4 * glass.size() + 16)
   {
     this->GlassChecks.clear(); // entries of props that went away
+    this->WarnedOpacity.clear();
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionGlassChecker::CheckOpacity(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  const double opacity = actor && actor->GetProperty() ? actor->GetProperty()->GetOpacity() : 1.0;
+  if (!(opacity < 1.0))
+  {
+    this->WarnedOpacity.erase(prop);
+    return;
+  }
+  auto warned = this->WarnedOpacity.find(prop);
+  if (warned != this->WarnedOpacity.end() && warned->second == opacity)
+  {
+    return;
+  }
+  this->WarnedOpacity[prop] = opacity;
+  // VTK hands translucent actors to its translucent pass, after the opaque step that draws
+  // the glass: such an actor never reaches the glass stages.
+  vtkWarningMacro("Glass actor " << prop << " has opacity " << opacity
+                                 << ": VTK draws translucent actors in its translucent pass, so "
+                                    "it is drawn as an ordinary translucent surface, not as "
+                                    "glass. Leave glass at opacity 1 (the scene shows through "
+                                    "it by refraction) and tint it with its colour.");
 }
 
 //------------------------------------------------------------------------------

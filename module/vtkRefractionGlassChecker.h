@@ -52,7 +52,10 @@ private:
     int Verdict = GLASS_OK;
   };
   int CheckGlassProp(vtkProp* prop);
+  // Says once per prop that a translucent glass actor is left to VTK's translucent pass.
+  void CheckOpacity(vtkProp* prop);
   std::map<vtkProp*, GlassCheck> GlassChecks;
+  std::map<vtkProp*, double> WarnedOpacity;
 };
 
 #endif

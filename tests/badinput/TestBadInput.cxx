@@ -375,6 +375,29 @@ int ZeroSizeViewport(MessageLog* log, const std::string&)
   return ZeroViewport(log);
 }
 
+// A glass actor made translucent: VTK's translucent pass draws it, as an ordinary translucent
+// surface. The pass says so once, and the picture is the one without the glass key.
+int TranslucentGlass(MessageLog* log, const std::string&)
+{
+  auto poly = Sphere(-1.2, 0.7);
+  Rig rig(kSize, kSize);
+  AddRest(rig);
+  auto subject = ActorFor(poly);
+  subject->GetProperty()->SetOpacity(0.5);
+  RF_REQUIRE(vtkRefractionPass::MakeGlass(subject, 1.5), "MakeGlass refused a valid IOR");
+  rig.Renderer->AddActor(subject);
+  Look(rig);
+  Rig plain(kSize, kSize);
+  AddRest(plain);
+  auto ordinary = ActorFor(poly);
+  ordinary->GetProperty()->SetOpacity(0.5);
+  plain.Renderer->AddActor(ordinary);
+  Look(plain);
+  const Frame reference = plain.Render();
+  return CheckScene(log, rig, "warning",
+    { "Glass actor", Address(subject.Get()), "opacity 0.5", "translucent pass" }, reference);
+}
+
 // The table of cases (rfBadInputCases.def, which CMake reads too: each is badinput.<name>).
 struct Case
 {

@@ -845,7 +845,7 @@ std::vector<Column> Columns(int stageCount)
   return c;
 }
 
-void WriteCsv(const std::string& path, const std::vector<Row>& rows, const std::string& renderer)
+bool WriteCsv(const std::string& path, const std::vector<Row>& rows, const std::string& renderer)
 {
   std::ofstream f(path);
   const auto columns = Columns(vtkRefractionPass::TIMED_STAGE_COUNT);
@@ -860,6 +860,8 @@ void WriteCsv(const std::string& path, const std::vector<Row>& rows, const std::
       f << ',' << column.Get(r);
     f << '\n';
   }
+  f.flush();
+  return static_cast<bool>(f);
 }
 
 std::vector<std::string> CsvFields(const std::string& text)
@@ -918,7 +920,7 @@ std::string Db(double v)
   return text;
 }
 
-void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
+bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
   const std::string& renderer, const std::string& windowPath, const std::string& run)
 {
   std::ofstream f(path);
@@ -1035,9 +1037,11 @@ void WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
       g.first.first.c_str(), g.first.second, Median(plain), lo, hi, widest);
     f << line;
   }
+  f.flush();
+  return static_cast<bool>(f);
 }
 
-void WritePareto(vtkRenderWindow* window, const std::string& path, const std::vector<Row>& rows)
+bool WritePareto(vtkRenderWindow* window, const std::string& path, const std::vector<Row>& rows)
 {
   std::vector<std::string> meshes;
   int plotSize = 0;
@@ -1049,7 +1053,7 @@ void WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
       plotSize = r.Size;
   }
   if (meshes.empty())
-    return;
+    return true; // nothing to plot
   vtkNew<vtkContextView> view;
   while (window->GetRenderers()->GetFirstRenderer())
   {
@@ -1135,6 +1139,7 @@ void WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
   writer->SetInputConnection(grab->GetOutputPort());
   writer->SetFileName(path.c_str());
   writer->Write();
+  return writer->GetErrorCode() == 0;
 }
 // A studio made in code, as a float lat-long image (VTK's layout: u = atan2(z, x), v =
 // asin(y), row 0 at the bottom): dim walls with a floor grid, a ceiling gradient and three
@@ -1417,9 +1422,15 @@ int main(int argc, char* argv[])
       options.Out = vtksys::SystemTools::GetFilenamePath(options.FromCsv);
       options.Out = options.Out.empty() ? "." : options.Out;
     }
-    WriteMarkdown(options.Out + "/results.md", rows, recorded, "recorded run",
-      "Remade from " + options.FromCsv + ".");
-    WritePareto(window, options.Out + "/pareto.png", rows);
+    if (!vtksys::SystemTools::MakeDirectory(options.Out) ||
+      !WriteMarkdown(options.Out + "/results.md", rows, recorded, "recorded run",
+        "Remade from " + options.FromCsv + ".") ||
+      !WritePareto(window, options.Out + "/pareto.png", rows))
+    {
+      std::fprintf(stderr, "cannot write results.md and pareto.png into %s\n",
+        options.Out.c_str());
+      return 1;
+    }
     std::printf("remade %s/results.md and pareto.png from %zu rows\n", options.Out.c_str(),
       rows.size());
     return 0;
@@ -1647,9 +1658,13 @@ int main(int argc, char* argv[])
       << std::thread::hardware_concurrency() << " logical CPUs: a load "
       << "above the CPU count means other programs shared the cores and every time is "
       << "inflated by them; compare ratios, not milliseconds.";
-  WriteCsv(options.Out + "/results.csv", rows, rendererName);
-  WriteMarkdown(options.Out + "/results.md", rows, rendererName, windowPath, run.str());
-  WritePareto(window, options.Out + "/pareto.png", rows);
+  if (!WriteCsv(options.Out + "/results.csv", rows, rendererName) ||
+    !WriteMarkdown(options.Out + "/results.md", rows, rendererName, windowPath, run.str()) ||
+    !WritePareto(window, options.Out + "/pareto.png", rows))
+  {
+    std::fprintf(stderr, "cannot write the results into %s\n", options.Out.c_str());
+    return 1;
+  }
   std::printf("wrote %s/results.csv, results.md, pareto.png (%s)\n", options.Out.c_str(),
     Clock(elapsed()).c_str());
   return 0;

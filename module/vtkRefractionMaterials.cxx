@@ -62,6 +62,7 @@ void vtkRefractionMaterials::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Materials: " << this->IOR.size() << "\n";
   os << indent << "DataColour: " << this->DataColour << "\n";
+  os << indent << "Dispersion: " << this->Dispersion << "\n";
   os << indent << "AbsorptionDistance: " << this->AbsorptionDistance << "\n";
 }
 
@@ -71,6 +72,9 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
   double thinSheetThickness)
 {
   this->IOR.clear();
+  this->RedIOR.clear();
+  this->BlueIOR.clear();
+  this->Dispersion = false;
   this->Sheet.clear();
   this->DataColour = false;
   std::vector<vtkProp*> sheets;
@@ -78,6 +82,10 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
   for (vtkProp* prop : glass)
   {
     this->IOR.push_back(static_cast<float>(vtkRefractionPass::GetIndexOfRefraction(prop)));
+    double rgb[3];
+    this->Dispersion = vtkRefractionPass::GetDispersion(prop, rgb) || this->Dispersion;
+    this->RedIOR.push_back(static_cast<float>(rgb[0]));
+    this->BlueIOR.push_back(static_cast<float>(rgb[2]));
     vtkInformation* keys = prop->GetPropertyKeys();
     const int model = keys && keys->Has(vtkRefractionPass::SURFACE_MODEL())
       ? keys->Get(vtkRefractionPass::SURFACE_MODEL())

@@ -34,6 +34,12 @@ public:
     bool dataColour, double absorptionDistance, double thinSheetThickness);
 
   const std::vector<float>& GetIndexOfRefraction() const { return this->IOR; }
+  /// Red and blue indices per material (the green one is GetIndexOfRefraction); equal to it
+  /// for props without dispersion.
+  const std::vector<float>& GetRedIndex() const { return this->RedIOR; }
+  const std::vector<float>& GetBlueIndex() const { return this->BlueIOR; }
+  /// Whether a glass prop disperses (vtkRefractionPass::SetDispersion).
+  bool GetDispersion() const { return this->Dispersion; }
   const std::vector<float>& GetSheetThickness() const { return this->Sheet; }
   /// Whether a glass prop has a colour of its own (then the G-buffer keeps the data colour).
   bool GetDataColour() const { return this->DataColour; }
@@ -49,6 +55,9 @@ private:
   void operator=(const vtkRefractionMaterials&) = delete;
 
   std::vector<float> IOR;
+  std::vector<float> RedIOR;
+  std::vector<float> BlueIOR;
+  bool Dispersion = false;
   std::vector<float> Sheet;
   bool DataColour = false;
   double AbsorptionDistance = 0.0;

@@ -4,6 +4,7 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleKey.h"
+#include "vtkInformationDoubleVectorKey.h"
 #include "vtkInformationIntegerKey.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -37,6 +38,7 @@ vtkStandardNewMacro(vtkRefractionPass);
 vtkInformationKeyMacro(vtkRefractionPass, GLASS, Integer);
 vtkInformationKeyMacro(vtkRefractionPass, INDEX_OF_REFRACTION, Double);
 vtkInformationKeyMacro(vtkRefractionPass, SURFACE_MODEL, Integer);
+vtkInformationKeyRestrictedMacro(vtkRefractionPass, DISPERSION, DoubleVector, 3);
 
 namespace
 {
@@ -181,8 +183,62 @@ void vtkRefractionPass::ClearGlass(vtkProp* prop)
   {
     keys->Remove(GLASS());
     keys->Remove(INDEX_OF_REFRACTION());
+    keys->Remove(DISPERSION());
     prop->Modified();
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionPass::SetDispersion(vtkProp* prop, double red, double green, double blue)
+{
+  if (!prop || !IsGlass(prop))
+  {
+    vtkGenericWarningMacro("vtkRefractionPass::SetDispersion: "
+      << (prop ? "the prop is not glass (MakeGlass first)" : "no prop given") << ".");
+    return false;
+  }
+  const double rgb[3] = { red, green, blue };
+  for (int c = 0; c < 3; ++c)
+  {
+    const rf_status status = rf_validate_ior(rgb[c]);
+    if (status != RF_OK)
+    {
+      vtkErrorWithObjectMacro(prop, "vtkRefractionPass::SetDispersion: "
+          << (c == 0 ? "red" : c == 1 ? "green" : "blue") << " index of refraction " << rgb[c]
+          << " rejected for " << prop->GetClassName() << " " << prop << ": "
+          << rf_status_message(status) << ". The prop's dispersion is unchanged.");
+      return false;
+    }
+  }
+  vtkInformation* keys = GetOrCreateKeys(prop);
+  keys->Set(DISPERSION(), rgb, 3);
+  keys->Set(INDEX_OF_REFRACTION(), green);
+  prop->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::ClearDispersion(vtkProp* prop)
+{
+  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
+  if (keys && keys->Has(DISPERSION()))
+  {
+    keys->Remove(DISPERSION());
+    prop->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionPass::GetDispersion(vtkProp* prop, double rgb[3])
+{
+  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
+  if (keys && keys->Has(DISPERSION()) && keys->Length(DISPERSION()) == 3)
+  {
+    keys->Get(DISPERSION(), rgb);
+    return true;
+  }
+  rgb[0] = rgb[1] = rgb[2] = GetIndexOfRefraction(prop);
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -425,6 +481,11 @@ void vtkRefractionPass::RenderGlass(
   }
   frame.SceneRefraction = sceneRefraction;
   frame.AbsorptionDistance = this->Materials->GetAbsorptionDistance();
+  if (this->Materials->GetDispersion())
+  {
+    frame.RedIndex = &this->Materials->GetRedIndex();
+    frame.BlueIndex = &this->Materials->GetBlueIndex();
+  }
   frame.BoundsDepthRange = this->BoundsDepthRange;
   if (!this->ShadeStage->Prepare(ren, method, this, frame, false))
   {

@@ -39,6 +39,7 @@
 
 class vtkImageData;
 class vtkInformationDoubleKey;
+class vtkInformationDoubleVectorKey;
 class vtkInformationIntegerKey;
 class vtkOpenGLRenderTimer;
 class vtkOpenGLRenderer;
@@ -101,6 +102,8 @@ public:
    * and tinted, and leaves in its own direction; no exit search).
    */
   static vtkInformationIntegerKey* SURFACE_MODEL();
+  /// Dispersion: the red, green and blue indices of refraction (see SetDispersion).
+  static vtkInformationDoubleVectorKey* DISPERSION();
   ///@}
   enum SurfaceModelType
   {
@@ -122,6 +125,20 @@ public:
   static bool IsGlass(vtkProp* prop);
   /// The prop's index of refraction (1.5 when the prop has none set).
   static double GetIndexOfRefraction(vtkProp* prop);
+
+  /**
+   * Dispersion (off unless set): a glass prop refracts red, green and blue light with their
+   * own indices, each colour channel following its own rays (three times the shading stage's
+   * work where any glass prop disperses). The index of refraction of MakeGlass becomes the
+   * green one. Each index is validated as MakeGlass validates it; on a bad one the prop's
+   * dispersion is left as it was and false returned. The prop must be glass already.
+   */
+  static bool SetDispersion(vtkProp* prop, double red, double green, double blue);
+  /// Remove a prop's dispersion: one index for all colours again.
+  static void ClearDispersion(vtkProp* prop);
+  /// The prop's red, green and blue indices; false (and the plain index thrice) without
+  /// dispersion.
+  static bool GetDispersion(vtkProp* prop, double rgb[3]);
 
   ///@{
   /// The passes that render everything else. Default: a vtkRenderStepsPass.

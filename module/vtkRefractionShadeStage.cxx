@@ -104,6 +104,10 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
   {
     defines << "#define RF_TINT\n";
   }
+  if (frame.RedIndex && frame.BlueIndex)
+  {
+    defines << "#define RF_DISPERSION\n";
+  }
   if (frame.SceneRefraction)
   {
     // March steps of the scene behind the glass: on the benchmark's scene (sphere before a
@@ -210,6 +214,16 @@ void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* 
   std::vector<float> ior(materialIOR);
   ior.resize(MaximumMaterials, ior.empty() ? 1.5f : ior.back());
   shader->SetUniform1fv("rfMaterialIOR", MaximumMaterials, ior.data());
+  if (frame.RedIndex && frame.BlueIndex && shader->IsUniformUsed("rfMaterialIORRed"))
+  {
+    for (const auto& channel : { std::make_pair("rfMaterialIORRed", frame.RedIndex),
+           std::make_pair("rfMaterialIORBlue", frame.BlueIndex) })
+    {
+      std::vector<float> values(*channel.second);
+      values.resize(MaximumMaterials, values.empty() ? 1.5f : values.back());
+      shader->SetUniform1fv(channel.first, MaximumMaterials, values.data());
+    }
+  }
   std::vector<float> sheet(materialSheet);
   sheet.resize(MaximumMaterials, sheet.empty() ? 0.f : sheet.back());
   if (shader->IsUniformUsed("rfMaterialSheet"))

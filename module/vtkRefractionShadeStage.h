@@ -53,6 +53,8 @@ public:
     bool EnvironmentBackground = false;       // the renderer's background (no cube map)
     bool SceneRefraction = false;             // the captured scene is followed
     double AbsorptionDistance = 0.0;          // > 0: the data's colour tints the glass
+    const std::vector<float>* RedIndex = nullptr;  // dispersion: red indices per material
+    const std::vector<float>* BlueIndex = nullptr; // and blue ones (nullptr: no dispersion)
     double Background[3] = { 0.0, 0.0, 0.0 };
     double Background2[3] = { 0.0, 0.0, 0.0 }; // = Background when it is not a gradient
     const double* BoundsDepthRange = nullptr;

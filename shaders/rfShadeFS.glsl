@@ -6,8 +6,9 @@
 // its depth, so the opaque scene's depth test keeps hidden glass hidden.
 // Defines set by the pass: RF_METHOD_{SIR,DIR,ISR,SSP}, RF_TIR_CLAMP, RF_FRESNEL,
 // RF_ENV_CUBEMAP or RF_ENV_BACKGROUND (else the built-in environment), RF_SCENE_REFRACTION,
-// RF_SCENE_STEPS, RF_TINT, RF_MAX_MATERIALS, RF_DEBUG_OUTPUT, RF_CORNER_SAMPLES (anti-aliasing:
-// the pixels' corners into the corner target instead of the pixels) and the method's own.
+// RF_SCENE_STEPS, RF_TINT, RF_DISPERSION, RF_MAX_MATERIALS, RF_DEBUG_OUTPUT, RF_CORNER_SAMPLES
+// (anti-aliasing: the pixels' corners into the corner target instead of the pixels) and the
+// method's own.
 in vec2 texCoord;
 uniform sampler2D rfFrontSurface;
 uniform sampler2D rfFrontDepth;
@@ -16,6 +17,11 @@ uniform sampler2D rfFrontColour;
 uniform float rfAbsorptionDistance;
 #endif
 uniform float rfMaterialIOR[RF_MAX_MATERIALS];
+#ifdef RF_DISPERSION
+// Dispersion: the red and blue indices (rfMaterialIOR is the green one).
+uniform float rfMaterialIORRed[RF_MAX_MATERIALS];
+uniform float rfMaterialIORBlue[RF_MAX_MATERIALS];
+#endif
 // > 0: the material is a thin sheet of that thickness (an open surface), 0: a solid.
 uniform float rfMaterialSheet[RF_MAX_MATERIALS];
 uniform int rfParallel;
@@ -192,10 +198,9 @@ struct rfRay
   int tir;
 };
 
-rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material)
+rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, float ior)
 {
   rfRay ray;
-  float ior = rfMaterialIOR[material];
   float sheet = rfMaterialSheet[material];
   vec3 P = rfPositionFromDepth(tc, depth);
   vec3 V = rfViewDirection(P);
@@ -245,6 +250,18 @@ rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material)
   return ray;
 }
 
+// The colour along the pixel's ray; with dispersion each channel follows the ray of its own
+// index (the green one is the ray of the debug output).
+vec3 rfShadeColour(vec2 tc, vec3 N1, float depth, int material)
+{
+  vec3 colour = rfShadeRay(tc, N1, depth, material, rfMaterialIOR[material]).colour;
+#ifdef RF_DISPERSION
+  colour.r = rfShadeRay(tc, N1, depth, material, rfMaterialIORRed[material]).colour.r;
+  colour.b = rfShadeRay(tc, N1, depth, material, rfMaterialIORBlue[material]).colour.b;
+#endif
+  return colour;
+}
+
 #ifdef RF_CORNER_SAMPLES
 // Anti-aliasing (vtkRefractionPass::SetAntiAliasing): this program shades the lower-left
 // corner of each pixel, where four texels of the G-buffer meet, into the corner target; the
@@ -289,7 +306,7 @@ vec4 rfCornerSample()
   }
   int index = clamp(int(material) - 1, 0, RF_MAX_MATERIALS - 1);
   vec3 colour =
-    rfShadeRay(vec2(rfPixel) / rfViewport.zw, normalize(normal), depth / count, index).colour;
+    rfShadeColour(vec2(rfPixel) / rfViewport.zw, normalize(normal), depth / count, index);
 #ifdef RF_TINT
   vec4 data = texelFetch(rfFrontColour, rfPixel, 0);
   colour = mix(colour, data.rgb, data.a);
@@ -311,12 +328,13 @@ void main()
   }
   gl_FragDepth = texelFetch(rfFrontDepth, rfPixel, 0).r;
   int rfMaterial = clamp(int(rfFront.w + 0.5) - 1, 0, RF_MAX_MATERIALS - 1);
-  rfRay rfCentre = rfShadeRay(texCoord, rf_oct_decode(rfFront.xy), rfFront.z, rfMaterial);
+  vec3 rfN1 = rf_oct_decode(rfFront.xy);
 #ifdef RF_DEBUG_OUTPUT
+  rfRay rfCentre = rfShadeRay(texCoord, rfN1, rfFront.z, rfMaterial, rfMaterialIOR[rfMaterial]);
   gl_FragData[0] = vec4(rfCentre.P2, length(rfCentre.P2 - rfCentre.P1));
   gl_FragData[1] = vec4(rfCentre.T2, 1.0 + float(rfCentre.tir));
 #else
-  vec3 rfColour = rfCentre.colour;
+  vec3 rfColour = rfShadeColour(texCoord, rfN1, rfFront.z, rfMaterial);
 #ifdef RF_TINT
   // EdgeVisibility: the edges over the glass, as VTK draws them over a surface.
   vec4 rfDataColour = texelFetch(rfFrontColour, rfPixel, 0);

@@ -701,9 +701,61 @@ int AntiAliasing()
   return EXIT_SUCCESS;
 }
 
+// Dispersion (vtkRefractionPass::SetDispersion): each colour channel follows the rays of its
+// own index, so the dispersive picture's red channel is the red channel of the same glass
+// with the red index alone, and likewise green and blue; and the channels part (colour
+// fringes) where the built-in environment has edges.
+int Dispersion()
+{
+  Scene scene(1.5);
+  scene.Pass->SetEnvironmentModeToBuiltin();
+  const double indices[3] = { 1.45, 1.5, 1.56 };
+  vtkSmartPointer<vtkImageData> single[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    vtkRefractionPass::MakeGlass(scene.Glass, indices[c]);
+    single[c] = scene.Render();
+  }
+  RF_REQUIRE(!vtkRefractionPass::SetDispersion(scene.Glass, 1.45, -1.0, 1.56),
+    "SetDispersion accepted a negative index");
+  double rgb[3];
+  RF_REQUIRE(!vtkRefractionPass::GetDispersion(scene.Glass, rgb) && rgb[0] == 1.56,
+    "a refused SetDispersion changed the prop");
+  RF_REQUIRE(vtkRefractionPass::SetDispersion(scene.Glass, indices[0], indices[1], indices[2]),
+    "SetDispersion refused valid indices");
+  auto dispersed = scene.Render();
+  int worst = 0;
+  int fringes = 0;
+  for (int y = 0; y < kSize; ++y)
+  {
+    for (int x = 0; x < kSize; ++x)
+    {
+      const unsigned char* p = Pixel(dispersed, x, y);
+      for (int c = 0; c < 3; ++c)
+      {
+        worst = std::max(worst, std::abs(p[c] - Pixel(single[c], x, y)[c]));
+      }
+      fringes += std::abs(p[0] - Pixel(single[1], x, y)[0]) > 40 ? 1 : 0;
+    }
+  }
+  std::printf("dispersion: largest channel difference to the single-index pictures %d, %d "
+              "pixels whose red differs from the green index's by more than 40\n",
+    worst, fringes);
+  RF_REQUIRE(worst <= 1, "a channel does not follow its own index (difference %d)", worst);
+  RF_REQUIRE(fringes > 100, "no colour fringes (%d pixels)", fringes);
+  vtkRefractionPass::ClearDispersion(scene.Glass);
+  RF_REQUIRE(!vtkRefractionPass::GetDispersion(scene.Glass, rgb) && rgb[0] == 1.5,
+    "ClearDispersion left the indices (%g)", rgb[0]);
+  return EXIT_SUCCESS;
+}
+
 int main(int argc, char* argv[])
 {
   const std::string name = argc > 1 ? argv[1] : "";
+  if (name == "dispersion")
+  {
+    return Dispersion();
+  }
   if (name == "anti_aliasing")
   {
     return AntiAliasing();

@@ -54,7 +54,7 @@ def test_contour(glass_contour, argv):
     from refraction import vtkRefractionPass
     from vtkmodules.vtkTestingRendering import vtkTesting
 
-    window, renderer, glass_actor, _ = glass_contour.build_scene(SIZE)
+    window, renderer, glass_actor, glass_pass = glass_contour.build_scene(SIZE)
     window.SetOffScreenRendering(1)
     window.Render()
     if not vtkRefractionPass.IsGlass(glass_actor):
@@ -76,6 +76,22 @@ def test_contour(glass_contour, argv):
     print("glass against plain rendering: thresholded error %.1f" % plain_error)
     if not plain_error > MIN_GLASS_DIFFERENCE:
         return fail("the glass image is no different from the plain one")
+
+    # The optional settings reach Python: dispersion on the actor's keys, anti-aliasing on
+    # the pass; each changes the picture.
+    vtkRefractionPass.MakeGlass(glass_actor, 1.5)
+    if not vtkRefractionPass.SetDispersion(glass_actor, 1.44, 1.5, 1.58):
+        return fail("SetDispersion refused valid indices")
+    rgb = [0.0, 0.0, 0.0]
+    if not vtkRefractionPass.GetDispersion(glass_actor, rgb) or rgb != [1.44, 1.5, 1.58]:
+        return fail("GetDispersion gave %s" % rgb)
+    glass_pass.SetAntiAliasing(True)
+    window.Render()
+    optional_error = thresholded_error(glass_image, grab(window))
+    print("dispersion and anti-aliasing against the plain glass: thresholded error %.1f"
+          % optional_error)
+    if not optional_error > 0.0:
+        return fail("dispersion and anti-aliasing change nothing")
     return 0
 
 

@@ -321,6 +321,11 @@ int BuildPipeline(const rfViewerOptions& o, const rfViewerSettings& s, Scene& sc
   scene.Glass = vtkSmartPointer<vtkActor>::New();
   scene.Glass->SetMapper(mapper);
   vtkRefractionPass::MakeGlass(scene.Glass, s.IOR);
+  if (s.Dispersion.size() == 3)
+  {
+    vtkRefractionPass::SetDispersion(
+      scene.Glass, s.Dispersion[0], s.Dispersion[1], s.Dispersion[2]);
+  }
   if (!o.Demo.empty() || !s.ContourValues.empty())
   {
     // A contour bounds a solid region of the field: where the sampling box cuts it, it has

@@ -20,6 +20,7 @@ struct rfViewerOptions
   std::string Background = "0.12,0.12,0.14,0.35,0.45,0.6";
   std::string Method = "dir";
   std::string IOR = "1.5";
+  std::string Dispersion;
   std::string Steps = "5";
   std::string Size = "512";
   std::string Frames;
@@ -47,6 +48,7 @@ struct rfViewerSettings
 {
   int Method = vtkRefractionPass::DIR;
   double IOR = 1.5;
+  std::vector<double> Dispersion; // red, green, blue indices; empty: none
   int Steps = 5;
   int Width = 512;
   int Height = 512;

@@ -107,6 +107,7 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
     this->Sheet.push_back(static_cast<float>(thickness));
     this->DataColour = this->DataColour || (dataColour && HasDataColour(prop));
   }
+  this->LargestDiagonal = largest;
   // The tint: light keeps the data's colour after this distance inside the glass.
   this->AbsorptionDistance = 0.0;
   if (this->DataColour)

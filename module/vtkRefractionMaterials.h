@@ -45,6 +45,9 @@ public:
   bool GetDataColour() const { return this->DataColour; }
   /// The tint's absorption distance (0 without data colour).
   double GetAbsorptionDistance() const { return this->AbsorptionDistance; }
+  /// The largest bounding-box diagonal of the glass props (world units): no path inside the
+  /// glass between two interfaces is longer.
+  double GetLargestDiagonal() const { return this->LargestDiagonal; }
 
 protected:
   vtkRefractionMaterials() = default;
@@ -61,6 +64,7 @@ private:
   std::vector<float> Sheet;
   bool DataColour = false;
   double AbsorptionDistance = 0.0;
+  double LargestDiagonal = 0.0;
   std::vector<vtkProp*> SheetsReported;
 };
 

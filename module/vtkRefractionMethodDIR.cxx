@@ -24,6 +24,10 @@ void vtkRefractionMethodDIR::AppendDefines(std::ostream& defines, vtkRefractionP
   {
     defines << "#define RF_DEPTH_RANGE_BOUNDS\n";
   }
+  if (settings->GetTIRBounces() > 0)
+  {
+    defines << "#define RF_TIR_BOUNCES " << settings->GetTIRBounces() << "\n";
+  }
 }
 
 //------------------------------------------------------------------------------

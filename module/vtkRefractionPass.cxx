@@ -114,6 +114,7 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TIRPolicy: " << (this->TIRPolicy == TIR_CLAMP ? "clamp" : "reflect") << "\n";
   os << indent << "Fresnel: " << this->Fresnel << "\n";
   os << indent << "AntiAliasing: " << this->AntiAliasing << "\n";
+  os << indent << "TIRBounces: " << this->TIRBounces << "\n";
   os << indent << "EnvironmentMode: "
      << (this->EnvironmentMode == ENVIRONMENT_RENDERER ? "renderer" : "builtin") << "\n";
   os << indent << "SceneRefraction: " << this->SceneRefraction << "\n";
@@ -481,6 +482,7 @@ void vtkRefractionPass::RenderGlass(
   }
   frame.SceneRefraction = sceneRefraction;
   frame.AbsorptionDistance = this->Materials->GetAbsorptionDistance();
+  frame.GlassDiagonal = this->Materials->GetLargestDiagonal();
   if (this->Materials->GetDispersion())
   {
     frame.RedIndex = &this->Materials->GetRedIndex();

@@ -228,6 +228,19 @@ public:
   vtkGetMacro(TIRPolicy, int);
   ///@}
 
+  ///@{
+  /**
+   * DIR only: total internal reflections followed inside the glass (0 by default: the TIR
+   * policy decides at the first exit). With B > 0 a ray totally reflected at its exit is
+   * mirrored there and followed through the glass between the front and the back capture
+   * (marched, then bisected) to its next exit, up to B times; the TIR policy applies after the
+   * last. Between two captured surfaces only: a ray that would cross a third one (a concave
+   * part) leaves where the two-layer picture says.
+   */
+  vtkSetClampMacro(TIRBounces, int, 0, 8);
+  vtkGetMacro(TIRBounces, int);
+  ///@}
+
   /**
    * What the glass shows where its rays leave toward the surroundings. Always the renderer's
    * environment texture when it is a cube map (a lat-long image through
@@ -373,6 +386,7 @@ protected:
   int SearchSteps = 5;
   int DepthRangeMode = DEPTH_RANGE_REDUCTION;
   int TIRPolicy = TIR_CLAMP;
+  int TIRBounces = 0;
   bool Fresnel = true;
   bool AntiAliasing = false;
   bool DebugOutput = false;

@@ -207,6 +207,12 @@ void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* 
     shader->SetUniform3f("rfBackground", bottom);
     shader->SetUniform3f("rfBackground2", top);
   }
+  if (shader->IsUniformUsed("rfGlassDiagonal"))
+  {
+    // The view matrix is a rotation and translation (VTK's cameras): world lengths are view
+    // lengths.
+    shader->SetUniformf("rfGlassDiagonal", static_cast<float>(frame.GlassDiagonal));
+  }
   if (shader->IsUniformUsed("rfAbsorptionDistance"))
   {
     shader->SetUniformf("rfAbsorptionDistance", static_cast<float>(frame.AbsorptionDistance));

@@ -3,7 +3,7 @@
 // between the min/max back depths (eq. 3-10) against the captured back surface
 // (rfBackSurface.glsl), refined by one secant step: rfk_dir_search of the kernel
 // (module/core/kernel/rf_kernel_dir.h, the same source the C core and its tests run).
-// Defines: RF_DEPTH_RANGE_BOUNDS, RF_ADAPTIVE_SEARCH, RF_SECANT_REFINE.
+// Defines: RF_DEPTH_RANGE_BOUNDS, RF_ADAPTIVE_SEARCH, RF_SECANT_REFINE, RF_TIR_BOUNCES.
 uniform int rfSearchSteps;
 #ifdef RF_DEPTH_RANGE_BOUNDS
 uniform vec2 rfDepthRangeBounds;
@@ -43,3 +43,78 @@ bool rfFindExit(vec3 P1, vec3 V, vec3 N1, vec3 T1, float etaIn, out vec3 P2, out
            P2, tc) &&
     rfBackNormalAt(tc, P1, N2);
 }
+
+#ifdef RF_TIR_BOUNCES
+uniform float rfGlassDiagonal;
+
+// Beyond the paper (total internal reflection followed, vtkRefractionPass::SetTIRBounces):
+// the ray P + t T, mirrored inside the glass at an exit, to its next interface. Inside means
+// between the front capture's depth and the back capture's at the ray's texel; the ray is
+// marched in 24 steps over at most the glass's bounding-box diagonal (no chord is longer),
+// the first step outside is bisected, and the exit is through whichever of the two surfaces
+// the last inside point was nearer. False where the ray leaves the image or no usable normal
+// is captured there.
+bool rfInsideAt(vec3 Q, out vec2 tc, out float toFront, out float toBack)
+{
+  tc = rfProjectToTexture(Q);
+  toFront = 0.0;
+  toBack = 0.0;
+  if (any(lessThan(tc, vec2(0.0))) || any(greaterThan(tc, vec2(1.0))))
+  {
+    return false;
+  }
+  ivec2 texel = ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0));
+  vec4 front = texelFetch(rfFrontSurface, texel, 0);
+  float back = texelFetch(rfBackSurface, texel, 0).a;
+  float depth = -Q.z;
+  float slack = 1e-4 * depth;
+  toFront = depth - front.z;
+  toBack = back - depth;
+  return front.w > 0.5 && back > 0.0 && toFront >= -slack && toBack >= -slack;
+}
+
+bool rfFollowInside(vec3 P, vec3 T, out vec3 exitP, out vec3 exitN)
+{
+  exitP = P;
+  exitN = vec3(0.0);
+  float tEnd = min(rfk_frustum_exit(rfCamera(), P, T), rfGlassDiagonal);
+  if (!(tEnd > 0.0))
+  {
+    return false;
+  }
+  float dt = tEnd / 24.0;
+  vec2 tc;
+  float toFront;
+  float toBack;
+  for (int i = 1; i <= 24; ++i)
+  {
+    if (!rfInsideAt(P + (float(i) * dt) * T, tc, toFront, toBack))
+    {
+      float lo = float(i - 1) * dt;
+      float hi = float(i) * dt;
+      for (int j = 0; j < 6; ++j)
+      {
+        float mid = 0.5 * (lo + hi);
+        if (rfInsideAt(P + mid * T, tc, toFront, toBack))
+        {
+          lo = mid;
+        }
+        else
+        {
+          hi = mid;
+        }
+      }
+      // The last inside point says which surface is near; none inside (the very first step
+      // left): the start's own surfaces decide.
+      rfInsideAt(P + lo * T, tc, toFront, toBack);
+      ivec2 texel = ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0));
+      vec3 normal = toFront < toBack ? rf_oct_decode(texelFetch(rfFrontSurface, texel, 0).xy)
+                                     : textureLod(rfBackSurface, tc, 0.0).xyz;
+      exitP = P + (0.5 * (lo + hi)) * T;
+      exitN = normal;
+      return dot(normal, normal) > 0.0;
+    }
+  }
+  return false;
+}
+#endif

@@ -223,6 +223,24 @@ rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, float ior)
   else if (!tirIn && rfFindExit(P, V, N1, T1, etaIn, P2, N2))
   {
     tir = rfRefractWithPolicy(T1, -normalize(N2), ior, T2);
+#ifdef RF_TIR_BOUNCES
+    // Totally reflected: mirrored inside and followed to the next exit (rfMethodDIR.glsl).
+    vec3 inside = T1;
+    for (int bounce = 0; bounce < RF_TIR_BOUNCES && tir == 1; ++bounce)
+    {
+      vec3 mirrored = reflect(inside, normalize(N2));
+      vec3 nextP;
+      vec3 nextN;
+      if (!rfFollowInside(P2, mirrored, nextP, nextN))
+      {
+        break;
+      }
+      P2 = nextP;
+      N2 = nextN;
+      inside = mirrored;
+      tir = rfRefractWithPolicy(inside, -normalize(N2), ior, T2);
+    }
+#endif
   }
   ray.P1 = P;
   ray.P2 = P2;

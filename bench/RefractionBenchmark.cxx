@@ -116,6 +116,7 @@ struct Setting
   bool Paper = false; // the paper's search exactly: no secant refinement
   bool NoScene = false; // SetSceneRefraction(false): the opaque scene is not refracted (NG off)
   bool AntiAliasing = false; // SetAntiAliasing(true): four rays per pixel
+  int Bounces = 0;           // SetTIRBounces: total internal reflections followed
   std::string Label() const
   {
     std::ostringstream s;
@@ -126,6 +127,10 @@ struct Setting
         << (Nearest ? " nearest" : "") << (Paper ? " paper" : "");
     }
     s << (NoScene ? " NG off" : "") << (AntiAliasing ? " AA" : "");
+    if (Bounces > 0)
+    {
+      s << " TIR " << Bounces;
+    }
     return s.str();
   }
 };
@@ -222,8 +227,9 @@ bool Parse(int argc, char* argv[], Options& o)
   args.AddArgument("--from-csv", Args::SPACE_ARGUMENT, &o.FromCsv,
     "Remake results.md and pareto.png from an earlier results.csv, without running.");
   args.AddBooleanArgument("--quick", &o.Quick,
-    "The four meshes at 512x512: DIR (5 steps), SIR, each with its plain render, 3 repeats "
-    "(a few minutes).");
+    "The four meshes at 512x512: DIR (5 steps; also with anti-aliasing, and with two total "
+    "internal reflections followed), SIR, each with its plain render, 3 repeats (a few "
+    "minutes).");
   args.AddBooleanArgument("--smoke", &o.Smoke,
     "64x64, sphere and torus, 5 frames, every method once: the ctest smoke run.");
   args.AddBooleanArgument("--x11", &o.X11, "Render through an X window instead of EGL.");
@@ -789,6 +795,8 @@ std::vector<Column> Columns(int stageCount)
   c.push_back({ "scene_refraction",
     [](const Row& r) { return std::string(r.Config.NoScene ? "0" : "1"); },
     [](Row& r, const std::string& v) { r.Config.NoScene = v == "0"; } });
+  c.push_back({ "tir_bounces", [](const Row& r) { return std::to_string(r.Config.Bounces); },
+    [](Row& r, const std::string& v) { r.Config.Bounces = std::atoi(v.c_str()); } });
   c.push_back({ "anti_aliasing",
     [](const Row& r) { return std::string(r.Config.AntiAliasing ? "1" : "0"); },
     [](Row& r, const std::string& v) { r.Config.AntiAliasing = v == "1"; } });
@@ -938,7 +946,8 @@ bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
        "N x N rays per pixel (the anti-aliased truth a camera sees); `model vs full SS` is the "
        "two-interface reference, supersampled too, against `full SS` on the same pixels: the "
        "best a two-interface method can read there. `AA`: the pass's anti-aliasing "
-       "(vtkRefractionPass::SetAntiAliasing). `TIR` / `rest`: PSNR "
+       "(vtkRefractionPass::SetAntiAliasing); `TIR 2`: two total internal reflections followed "
+       "(SetTIRBounces). `TIR` / `rest`: PSNR "
        "against `full SS` on the pixels where the two-interface reference's ray is totally "
        "reflected at the exit, and on the others (`-`: none). Stage times are the pass's GL "
        "timer queries, over frames of their own after the timed frames (the timed frames run "
@@ -1248,10 +1257,13 @@ std::vector<Setting> Settings(const Options& o)
   std::vector<Setting> settings;
   Setting antiAliased{ "DIR", 5 };
   antiAliased.AntiAliasing = true;
+  Setting bounces{ "DIR", 5 };
+  bounces.Bounces = 2;
   if (o.Quick)
   {
     settings.push_back({ "DIR", 5 });
     settings.push_back(antiAliased);
+    settings.push_back(bounces);
     settings.push_back({ "SIR", 0 });
     return settings;
   }
@@ -1274,6 +1286,7 @@ std::vector<Setting> Settings(const Options& o)
   settings.push_back({ "DIR", 5, false, false, true });
   settings.push_back({ "DIR", 5, false, false, false, true });
   settings.push_back(antiAliased);
+  settings.push_back(bounces);
   settings.push_back({ "ISR", 0 });
   settings.push_back({ "SSP", 0 });
   return settings;
@@ -1307,6 +1320,7 @@ void Apply(vtkRefractionPass* pass, const Setting& setting)
   pass->SetSecantRefinement(!setting.Paper);
   pass->SetSceneRefraction(!setting.NoScene);
   pass->SetAntiAliasing(setting.AntiAliasing);
+  pass->SetTIRBounces(setting.Bounces);
 }
 
 // One mesh in the scene: its actor, the opaque actors around it, and what the rows report.

@@ -641,6 +641,27 @@ int ReferenceNG(const std::string& outDir)
 }
 }
 
+// PSNR of two pictures of the pass against a reference's colours (clamped to [0, 1], what an
+// 8-bit window shows) on the pixels of `mask`. False where the mask is empty.
+bool ComparePair(vtkImageData* first, vtkImageData* second, vtkDataArray* colour,
+  const std::vector<unsigned char>& mask, double& psnrFirst, double& psnrSecond)
+{
+  const size_t count = mask.size();
+  std::vector<float> truth(3 * count);
+  for (size_t i = 0; i < count; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      truth[3 * i + c] =
+        static_cast<float>(std::min(1.0, std::max(0.0, colour->GetComponent(i, c))));
+    }
+  }
+  const std::vector<float> a = ToFloat(first);
+  const std::vector<float> b = ToFloat(second);
+  return rf_psnr(a.data(), truth.data(), count, 3, mask.data(), &psnrFirst) == RF_OK &&
+    rf_psnr(b.data(), truth.data(), count, 3, mask.data(), &psnrSecond) == RF_OK;
+}
+
 // Anti-aliasing (vtkRefractionPass::SetAntiAliasing) against the pixel-averaged truth: the
 // two-interface reference at 4 x 4 rays per pixel, over the built-in environment (its
 // checkered ground, squeezed by the ball lens, aliases) and a black background (which the
@@ -672,26 +693,17 @@ int AntiAliasing()
   vtkDataArray* passFlags = debug->GetPointData()->GetArray("Flags");
   RF_REQUIRE(colour && flags && passFlags, "missing arrays");
   const size_t count = static_cast<size_t>(kSize) * kSize;
-  std::vector<float> truth(3 * count);
   std::vector<unsigned char> glass(count);
   size_t glassCount = 0;
   for (size_t i = 0; i < count; ++i)
   {
-    for (int c = 0; c < 3; ++c)
-    {
-      truth[3 * i + c] = static_cast<float>(colour->GetComponent(i, c));
-    }
     glass[i] = flags->GetComponent(i, 0) > 0.5 && passFlags->GetComponent(i, 0) > 0.5;
     glassCount += glass[i];
   }
   RF_REQUIRE(glassCount > 3000, "too few glass pixels: %zu", glassCount);
-  const std::vector<float> off = ToFloat(aliased);
-  const std::vector<float> on = ToFloat(smooth);
   double psnrOff = 0.0;
   double psnrOn = 0.0;
-  RF_REQUIRE(rf_psnr(off.data(), truth.data(), count, 3, glass.data(), &psnrOff) == RF_OK &&
-      rf_psnr(on.data(), truth.data(), count, 3, glass.data(), &psnrOn) == RF_OK,
-    "no PSNR");
+  RF_REQUIRE(ComparePair(aliased, smooth, colour, glass, psnrOff, psnrOn), "no PSNR");
   std::printf("anti_aliasing: %zu glass pixels, PSNR against the 4x4 reference %.2f dB with "
               "anti-aliasing, %.2f dB without\n",
     glassCount, psnrOn, psnrOff);
@@ -792,27 +804,17 @@ int TIRFollowed()
   vtkDataArray* colour = full->GetOutput()->GetPointData()->GetArray("Colour");
   RF_REQUIRE(tir && hit && colour, "missing reference arrays");
   const size_t count = static_cast<size_t>(kSize) * kSize;
-  std::vector<float> truth(3 * count);
   std::vector<unsigned char> reflected(count);
   size_t reflectedCount = 0;
   for (size_t i = 0; i < count; ++i)
   {
-    for (int c = 0; c < 3; ++c)
-    {
-      truth[3 * i + c] = static_cast<float>(
-        std::min(1.0, std::max(0.0, colour->GetComponent(i, c)))); // an 8-bit window's range
-    }
     reflected[i] = hit->GetComponent(i, 0) > 0.5 && tir->GetComponent(i, 0) > 0.5;
     reflectedCount += reflected[i];
   }
   RF_REQUIRE(reflectedCount > 1000, "too few totally reflected pixels: %zu", reflectedCount);
-  const std::vector<float> off = ToFloat(clamped);
-  const std::vector<float> on = ToFloat(followed);
   double psnrOff = 0.0;
   double psnrOn = 0.0;
-  RF_REQUIRE(rf_psnr(off.data(), truth.data(), count, 3, reflected.data(), &psnrOff) == RF_OK &&
-      rf_psnr(on.data(), truth.data(), count, 3, reflected.data(), &psnrOn) == RF_OK,
-    "no PSNR");
+  RF_REQUIRE(ComparePair(clamped, followed, colour, reflected, psnrOff, psnrOn), "no PSNR");
   std::printf("tir_followed: %zu totally reflected pixels, PSNR against the full reference %.2f "
               "dB with two bounces followed, %.2f dB with the clamp\n",
     reflectedCount, psnrOn, psnrOff);

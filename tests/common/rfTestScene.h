@@ -13,11 +13,13 @@
 #include <vtkCamera.h>
 #include <vtkConeSource.h>
 #include <vtkCubeSource.h>
+#include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkImageDifference.h>
 #include <vtkNew.h>
 #include <vtkParametricFunctionSource.h>
 #include <vtkParametricTorus.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkPolyDataNormals.h>
@@ -30,6 +32,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <vector>
 
 namespace rftest
 {
@@ -195,6 +198,22 @@ inline vtkSmartPointer<vtkImageData> Grab(vtkRenderWindow* window)
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->DeepCopy(grab->GetOutput());
   return image;
+}
+
+// An 8-bit picture's colour as floats in [0, 1], 3 per pixel, bottom row first (the layout
+// of the reference's "Colour" and of rf_metrics).
+inline std::vector<float> ToColour(vtkImageData* image)
+{
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  std::vector<float> colour(3 * static_cast<size_t>(scalars->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      colour[3 * i + c] = static_cast<float>(scalars->GetComponent(i, c) / 255.0);
+    }
+  }
+  return colour;
 }
 
 // VTK's own image difference (the measure the regression test applies).

@@ -13,6 +13,7 @@
 // 4. Bad environments (an integer image, a 3D image, a frame whose up and right are
 //    parallel) make Trace return false with an error instead of tracing something else.
 // Needs X (xvfb-run -a).
+#include "rfTestScene.h"
 #include "rf_require.h"
 #include "vtkRefractionPass.h"
 #include "vtkRefractionReference.h"
@@ -32,7 +33,6 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSphereSource.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
 #include <cmath>
@@ -93,24 +93,6 @@ vtkSmartPointer<vtkImageData> MakeFace(int face, int side)
   });
 }
 
-std::vector<float> Grab(vtkRenderWindow* window)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  grab->SetInputBufferTypeToRGB();
-  grab->Update();
-  vtkDataArray* rgb = grab->GetOutput()->GetPointData()->GetScalars();
-  std::vector<float> colour(3 * rgb->GetNumberOfTuples());
-  for (vtkIdType i = 0; i < rgb->GetNumberOfTuples(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      colour[3 * i + c] = static_cast<float>(rgb->GetComponent(i, c) / 255.0);
-    }
-  }
-  return colour;
-}
 
 struct Difference
 {
@@ -193,7 +175,7 @@ int main()
   {
     renderer->SetEnvironmentTexture(environments[e]);
     window->Render();
-    const std::vector<float> rendered = Grab(window);
+    const std::vector<float> rendered = rftest::ToColour(rftest::Grab(window));
     vtkNew<vtkRefractionReference> reference;
     RF_REQUIRE(reference->Trace(renderer, Size, Size), "trace failed (%s)", names[e]);
     const Difference framed = Compare(rendered, reference->GetOutput());

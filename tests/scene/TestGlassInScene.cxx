@@ -484,24 +484,6 @@ vtkSmartPointer<vtkActor> Axis(const double from[3], const double to[3], double 
   return actor;
 }
 
-// The 8-bit picture as floats in [0, 1], 3 per pixel.
-std::vector<float> ToFloat(vtkImageData* image)
-{
-  const int* dims = image->GetDimensions();
-  std::vector<float> rgb(3 * static_cast<size_t>(dims[0]) * dims[1]);
-  for (int y = 0; y < dims[1]; ++y)
-  {
-    for (int x = 0; x < dims[0]; ++x)
-    {
-      const unsigned char* p = Pixel(image, x, y);
-      for (int c = 0; c < 3; ++c)
-      {
-        rgb[3 * (static_cast<size_t>(y) * dims[0] + x) + c] = p[c] / 255.f;
-      }
-    }
-  }
-  return rgb;
-}
 
 void WritePNG(vtkImageData* image, const std::string& path)
 {
@@ -570,7 +552,7 @@ int ReferenceNG(const std::string& outDir)
   RF_REQUIRE(glassCount > 3000 && sceneryCount > 3000, "too few pixels: %zu glass, %zu opaque",
     glassCount, sceneryCount);
 
-  const std::vector<float> on = ToFloat(picture);
+  const std::vector<float> on = rftest::ToColour(picture);
   double psnrOn = 0.0;
   double psnrScenery = 0.0;
   RF_REQUIRE(rf_psnr(on.data(), truthRGB.data(), count, 3, glass.data(), &psnrOn) == RF_OK,
@@ -581,7 +563,7 @@ int ReferenceNG(const std::string& outDir)
   scene.Pass->SceneRefractionOff();
   auto withoutScene = scene.Render();
   scene.Pass->SceneRefractionOn();
-  const std::vector<float> off = ToFloat(withoutScene);
+  const std::vector<float> off = rftest::ToColour(withoutScene);
   double psnrOff = 0.0;
   RF_REQUIRE(rf_psnr(off.data(), truthRGB.data(), count, 3, glass.data(), &psnrOff) == RF_OK,
     "no PSNR without scene refraction");
@@ -656,8 +638,8 @@ bool ComparePair(vtkImageData* first, vtkImageData* second, vtkDataArray* colour
         static_cast<float>(std::min(1.0, std::max(0.0, colour->GetComponent(i, c))));
     }
   }
-  const std::vector<float> a = ToFloat(first);
-  const std::vector<float> b = ToFloat(second);
+  const std::vector<float> a = rftest::ToColour(first);
+  const std::vector<float> b = rftest::ToColour(second);
   return rf_psnr(a.data(), truth.data(), count, 3, mask.data(), &psnrFirst) == RF_OK &&
     rf_psnr(b.data(), truth.data(), count, 3, mask.data(), &psnrSecond) == RF_OK;
 }

@@ -64,8 +64,9 @@ namespace
 const int kSize = 160;
 // reference_ng's thresholds (PSNR in dB). Measured on llvmpipe (EGL), 160 x 160: the glass
 // 14.78 dB with scene refraction (15.05 with the earlier 24-step march; 4452 pixels; the
-// error is where the axes, close behind the ball, are seen through it: the capture holds only what the camera sees, so rays passing
-// behind an axis find the board's depth, and the screen-space march misses thin tubes), and
+// error is where the axes, close behind the ball, are seen through it: the capture holds
+// only what the camera sees, so rays passing behind an axis find the board's depth, and the
+// screen-space march misses thin tubes), and
 // 8.38 dB with SetSceneRefraction(false) (the glass then shows only the background): 13 dB
 // lets the first pass and fails the second. The opaque pixels outside the glass: 89.27 dB
 // (VTK's shading reproduced to float rounding); 60 dB is an RMSE of a quarter of an 8-bit

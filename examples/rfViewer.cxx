@@ -64,7 +64,7 @@ namespace
 {
 const char* MethodName(int method)
 {
-  static const char* const names[] = { "SIR", "DIR", "ISR", "SSP" };
+  static const char* const names[] = { "SIR", "DIR", "ISR", "SSP", "PEEL" };
   return names[method];
 }
 
@@ -459,6 +459,7 @@ int BuildScene(const rfViewerOptions& o, const rfViewerSettings& s, Scene& scene
   }
   scene.Pass->SetMethod(s.Method);
   scene.Pass->SetSearchSteps(s.Steps);
+  scene.Pass->SetPeelLayers(s.Layers);
   scene.Pass->SetAntiAliasing(o.AntiAliasing);
   scene.Renderer->SetPass(scene.Pass);
 
@@ -723,9 +724,9 @@ void OnKey(vtkObject* caller, unsigned long, void* clientData, void*)
   const int steps = static_cast<int>(scene.Times.size());
   if (key == "m")
   {
-    // DIR -> SIR -> ISR -> SSP -> DIR
+    // DIR -> SIR -> ISR -> SSP -> PEEL -> DIR
     static const int next[] = { vtkRefractionPass::ISR, vtkRefractionPass::SIR,
-      vtkRefractionPass::SSP, vtkRefractionPass::DIR };
+      vtkRefractionPass::SSP, vtkRefractionPass::PEEL, vtkRefractionPass::DIR };
     scene.Pass->SetMethod(next[scene.Pass->GetMethod()]);
   }
   else if (key == "i" || key == "I")

@@ -116,7 +116,7 @@ void PrintHelp(const std::string& options)
     "off-screen window when EGL is missing and DISPLAY is set) and writes what is asked:\n"
     "--screenshot, --out (a PNG per frame), --contact-sheet, --timing. A progress line is\n"
     "printed while frames are written. In the window: m cycles the method (DIR, SIR, ISR,\n"
-    "SSP), i / I lower / raise the index of refraction by 0.05, + / - change the search steps,\n"
+    "SSP, PEEL), i / I lower / raise the index of refraction by 0.05, + / - change the search steps,\n"
     "space starts / stops the animation, the arrows Right / Left step through time; the line\n"
     "at the bottom"
     " shows method, settings, the last frame time and the time step.\n"
@@ -202,13 +202,15 @@ int rfViewerParseOptions(int argc, char* argv[], const std::vector<std::string>&
     { "--background", "R,G,B[,R,G,B]", &o.Background, nullptr,
       "The renderer's background: r,g,b or a gradient r,g,b,r2,g2,b2 (bottom, top), 0..1." },
     { "--method", "NAME", &o.Method, nullptr,
-      "dir (default: two interfaces, Oliveira and Brauwers), sir (one interface), isr (Wyman's distance estimate), ssp (screen-space perturbation)." },
+      "dir (default: two interfaces, Oliveira and Brauwers), sir (one interface), isr (Wyman's distance estimate), ssp (screen-space perturbation), peel (every interface of --layers depth-peeled layers: glass inside and behind glass, Chi, Wang and Hu)." },
     { "--ior", "X", &o.IOR, nullptr,
       "Index of refraction of the glass, 0.1 to 10 (default 1.5)." },
     { "--dispersion", "R,G,B", &o.Dispersion, nullptr,
       "Dispersion: red, green and blue indices of refraction, 0.1 to 10 each (the green one replaces --ior; three times the shading work)." },
     { "--steps", "N", &o.Steps, nullptr,
       "Search steps of DIR's binary search, 0 to 16 (default 5)." },
+    { "--layers", "K", &o.Layers, nullptr,
+      "Layers of the glass peeled for --method peel, 2 to 8 (default 4)." },
     { "--anti-aliasing", nullptr, nullptr, &o.AntiAliasing,
       "Anti-alias the glass: the refraction shaded at the pixels' corners, each pixel the average of its four (vtkRefractionPass::SetAntiAliasing; about 1.1-1.5 times the frame time)." },
     { "--size", "N|WxH", &o.Size, nullptr,
@@ -302,11 +304,11 @@ int rfViewerParseOptions(int argc, char* argv[], const std::vector<std::string>&
   arguments.DeleteRemainingArguments(unusedCount, &unused);
 
   const std::string method = vtksys::SystemTools::LowerCase(o.Method);
-  static const char* const methods[] = { "sir", "dir", "isr", "ssp" };
+  static const char* const methods[] = { "sir", "dir", "isr", "ssp", "peel" };
   const auto found = std::find(std::begin(methods), std::end(methods), method);
   if (found == std::end(methods))
   {
-    return rfViewerUsage("--method must be dir, sir, isr or ssp, not " + rfViewerQuote(o.Method));
+    return rfViewerUsage("--method must be dir, sir, isr, ssp or peel, not " + rfViewerQuote(o.Method));
   }
   s.Method = static_cast<int>(found - std::begin(methods));
   if (!ParseDouble(o.IOR, 0.1, 10.0, s.IOR))
@@ -320,6 +322,10 @@ int rfViewerParseOptions(int argc, char* argv[], const std::vector<std::string>&
   {
     return rfViewerUsage(
       "--dispersion needs r,g,b indices from 0.1 to 10, not " + rfViewerQuote(o.Dispersion));
+  }
+  if (!ParseInt(o.Layers, 2, 8, s.Layers))
+  {
+    return rfViewerUsage("--layers needs a whole number from 2 to 8, not " + rfViewerQuote(o.Layers));
   }
   if (!ParseInt(o.Steps, 0, 16, s.Steps))
   {

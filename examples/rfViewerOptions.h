@@ -22,6 +22,7 @@ struct rfViewerOptions
   std::string IOR = "1.5";
   std::string Dispersion;
   std::string Steps = "5";
+  std::string Layers = "4";
   std::string Size = "512";
   std::string Frames;
   std::string Time;
@@ -50,6 +51,7 @@ struct rfViewerSettings
   double IOR = 1.5;
   std::vector<double> Dispersion; // red, green, blue indices; empty: none
   int Steps = 5;
+  int Layers = 4;
   int Width = 512;
   int Height = 512;
   int Frames = -1; // -1: every time step (or one frame of a static mesh)

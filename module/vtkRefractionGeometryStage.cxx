@@ -62,8 +62,8 @@ void vtkRefractionGeometryStage::Render(const vtkRenderState*)
 
 //------------------------------------------------------------------------------
 void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
-  bool normalDistance, bool dataColour, bool backNearest, vtkMatrix4x4* inverseProjection,
-  bool parallel)
+  bool normalDistance, bool dataColour, bool backNearest, bool peel,
+  vtkMatrix4x4* inverseProjection, bool parallel)
 {
   this->Glass = glass;
   this->MaterialIndex.clear();
@@ -89,6 +89,11 @@ void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
   if (backNearest)
   {
     defines << "#define RF_BACK_NEAREST\n";
+  }
+  this->Peel = peel;
+  if (peel)
+  {
+    defines << "#define RF_PEEL_CAPTURE\n";
   }
   if (defines.str() != this->Defines)
   {
@@ -213,6 +218,23 @@ void vtkRefractionGeometryStage::DrawBack(vtkOpenGLRenderer* ren, vtkRefractionT
   this->DrawIntoTargets(ren, targets, { vtkRefractionTargets::BACK_SURFACE },
     vtkRefractionTargets::BACK_Z, this->BackNearest ? 1.0 : 0.0,
     this->BackNearest ? GL_LESS : GL_GREATER, STAGE_BACK);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionGeometryStage::DrawPeel(
+  vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layer)
+{
+  if (!this->Peel || layer < 1 || layer > 7)
+  {
+    return;
+  }
+  this->PeelPrevious = targets->Get(
+    layer == 1 ? vtkRefractionTargets::FRONT_SURFACE : vtkRefractionTargets::PEEL_1 + layer - 2);
+  this->PeelPrevious->Activate();
+  this->DrawIntoTargets(ren, targets, { vtkRefractionTargets::PEEL_1 + layer - 1 },
+    vtkRefractionTargets::PEEL_Z, 1.0, GL_LESS, STAGE_PEEL);
+  this->PeelPrevious->Deactivate();
+  this->PeelPrevious = nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -343,6 +365,11 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
       static_cast<float>(this->Origin[1]), static_cast<float>(this->Width),
       static_cast<float>(this->Height) };
     program->SetUniform4f("rfViewport", viewport);
+  }
+  if (this->Stage == STAGE_PEEL && this->PeelPrevious && program->IsUniformUsed("rfPeelPrevious"))
+  {
+    program->SetUniformi("rfPeelPrevious", this->PeelPrevious->GetTextureUnit());
+    program->SetUniformi("rfOutwardFront", this->IsOutwardFront(prop) ? 1 : 0);
   }
   if (program->IsUniformUsed("rfWindingSign"))
   {
@@ -512,12 +539,26 @@ void vtkRefractionGeometryStage::CullHiddenFaces(vtkProp* prop)
   // before the draw. On a closed mesh the nearest surface always faces the camera and the
   // furthest faces away, so the other faces need neither rasterizing nor shading (about half
   // the fragments of each stage). Open meshes keep both: their back side can be the nearest.
+  // Peeling keeps every face, whatever the actor's own culling.
+  if (this->State && this->Stage == STAGE_PEEL)
+  {
+    this->State->vtkglDisable(GL_CULL_FACE);
+    return;
+  }
   const Surface& surface = this->GetSurface(prop);
   if (!this->State || !surface.Closed ||
     (this->Stage != STAGE_FRONT && this->Stage != STAGE_BACK))
   {
     return;
   }
+  const bool cullFront = (this->Stage == STAGE_BACK) == this->IsOutwardFront(prop);
+  this->State->vtkglEnable(GL_CULL_FACE);
+  this->State->vtkglCullFace(cullFront ? GL_FRONT : GL_BACK);
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionGeometryStage::IsOutwardFront(vtkProp* prop)
+{
   // A mirroring actor matrix turns the winding seen on screen.
   vtkActor* actor = vtkActor::SafeDownCast(prop);
   double mirror = 1.0;
@@ -534,10 +575,7 @@ void vtkRefractionGeometryStage::CullHiddenFaces(vtkProp* prop)
     }
     mirror = vtkMath::Determinant3x3(m);
   }
-  const bool outwardIsFront = (surface.WindingSign > 0) == (mirror >= 0.0);
-  const bool cullFront = (this->Stage == STAGE_BACK) == outwardIsFront;
-  this->State->vtkglEnable(GL_CULL_FACE);
-  this->State->vtkglCullFace(cullFront ? GL_FRONT : GL_BACK);
+  return (this->GetSurface(prop).WindingSign > 0) == (mirror >= 0.0);
 }
 
 //------------------------------------------------------------------------------

@@ -27,6 +27,7 @@ class vtkOpenGLState;
 class vtkPolyData;
 class vtkProp;
 class vtkRefractionTargets;
+class vtkTextureObject;
 
 class vtkRefractionGeometryStage : public vtkOpenGLRenderPass
 {
@@ -40,22 +41,27 @@ public:
     STAGE_NONE = 0,
     STAGE_FRONT = 1,
     STAGE_BACK = 2,
-    STAGE_MASK = 3
+    STAGE_MASK = 3,
+    STAGE_PEEL = 4
   };
 
   /**
    * Settings of the next draws: the glass props (their position is their material index),
    * whether the G-buffer carries ISR's d_N, whether the back capture keeps the nearest
-   * back-facing surface, the camera's inverse projection (GL layout) and projection type.
+   * back-facing surface, whether layers are peeled, the camera's inverse projection (GL
+   * layout) and projection type.
    */
   void Configure(const std::vector<vtkProp*>& glass, bool normalDistance, bool dataColour,
-    bool backNearest, vtkMatrix4x4* inverseProjection, bool parallel);
+    bool backNearest, bool peel, vtkMatrix4x4* inverseProjection, bool parallel);
 
   /// The front G-buffer (FRONT_SURFACE, FRONT_COLOR and FRONT_AUX when configured,
   /// FRONT_DEPTH).
   void DrawFront(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets);
   /// The back capture (BACK_SURFACE, BACK_Z).
   void DrawBack(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets);
+  /// PEEL's layer `layer` (1..7: PEEL_1..PEEL_7), peeled behind the layer before it (layer
+  /// 0 is FRONT_SURFACE, drawn first).
+  void DrawPeel(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layer);
   /// SSP's refraction mask into the alpha of the framebuffer bound now.
   void DrawMask(vtkOpenGLRenderer* ren);
 
@@ -96,6 +102,8 @@ private:
     bool Boundary = false; ///< an edge used once (an open surface)
   };
   const Surface& GetSurface(vtkProp* prop);
+  /// Whether the prop's outward side is the GL front face on screen (winding and mirroring).
+  bool IsOutwardFront(vtkProp* prop);
   void CullHiddenFaces(vtkProp* prop);
   void MapNormalDistance(vtkProp* prop);
 
@@ -107,6 +115,8 @@ private:
   bool NormalDistance = false;
   bool DataColour = false;
   bool BackNearest = false;
+  bool Peel = false;
+  vtkTextureObject* PeelPrevious = nullptr; ///< the layer the one being drawn peels behind
   bool Parallel = false;
   vtkNew<vtkMatrix4x4> InverseProjection;
   int Stage = STAGE_NONE;

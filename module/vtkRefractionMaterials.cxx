@@ -1,6 +1,7 @@
 #include "vtkRefractionMaterials.h"
 
 #include "vtkActor.h"
+#include "vtkBoundingBox.h"
 #include "vtkCellData.h"
 #include "vtkDataSet.h"
 #include "vtkInformation.h"
@@ -79,8 +80,14 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
   this->DataColour = false;
   std::vector<vtkProp*> sheets;
   double largest = 0.0;
+  vtkBoundingBox all;
   for (vtkProp* prop : glass)
   {
+    const double* bounds = prop->GetBounds();
+    if (bounds && bounds[0] <= bounds[1])
+    {
+      all.AddBounds(bounds);
+    }
     this->IOR.push_back(static_cast<float>(vtkRefractionPass::GetIndexOfRefraction(prop)));
     double rgb[3];
     this->Dispersion = vtkRefractionPass::GetDispersion(prop, rgb) || this->Dispersion;
@@ -108,6 +115,7 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
     this->DataColour = this->DataColour || (dataColour && HasDataColour(prop));
   }
   this->LargestDiagonal = largest;
+  this->ExtentDiagonal = all.IsValid() ? all.GetDiagonalLength() : 0.0;
   // The tint: light keeps the data's colour after this distance inside the glass.
   this->AbsorptionDistance = 0.0;
   if (this->DataColour)

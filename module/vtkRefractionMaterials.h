@@ -48,6 +48,8 @@ public:
   /// The largest bounding-box diagonal of the glass props (world units): no path inside the
   /// glass between two interfaces is longer.
   double GetLargestDiagonal() const { return this->LargestDiagonal; }
+  /// The diagonal of the bounding box of all the glass props together.
+  double GetExtentDiagonal() const { return this->ExtentDiagonal; }
 
 protected:
   vtkRefractionMaterials() = default;
@@ -65,6 +67,7 @@ private:
   bool DataColour = false;
   double AbsorptionDistance = 0.0;
   double LargestDiagonal = 0.0;
+  double ExtentDiagonal = 0.0;
   std::vector<vtkProp*> SheetsReported;
 };
 

@@ -2,6 +2,7 @@
 
 #include "vtkRefractionMethodDIR.h"
 #include "vtkRefractionMethodISR.h"
+#include "vtkRefractionMethodPEEL.h"
 #include "vtkRefractionMethodSIR.h"
 #include "vtkRefractionMethodSSP.h"
 #include "vtkRefractionPass.h"
@@ -20,6 +21,8 @@ vtkSmartPointer<vtkRefractionMethod> vtkRefractionMethod::Create(int method)
       return vtkSmartPointer<vtkRefractionMethodISR>::New();
     case vtkRefractionPass::SSP:
       return vtkSmartPointer<vtkRefractionMethodSSP>::New();
+    case vtkRefractionPass::PEEL:
+      return vtkSmartPointer<vtkRefractionMethodPEEL>::New();
     default:
       return nullptr;
   }
@@ -33,7 +36,7 @@ void vtkRefractionMethod::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-void vtkRefractionMethod::AddTargets(std::vector<bool>& wanted, vtkRefractionPass*) const
+void vtkRefractionMethod::AddTargets(std::vector<bool>& wanted, vtkRefractionPass* settings) const
 {
   wanted.assign(vtkRefractionTargets::TARGET_COUNT, false);
   wanted[vtkRefractionTargets::FRONT_SURFACE] = true;
@@ -51,6 +54,12 @@ void vtkRefractionMethod::AddTargets(std::vector<bool>& wanted, vtkRefractionPas
   {
     wanted[vtkRefractionTargets::SCENE_COLOR] = true;
   }
+  const int layers = this->GetPeelLayers(settings);
+  for (int layer = 1; layer < layers; ++layer)
+  {
+    wanted[vtkRefractionTargets::PEEL_1 + layer - 1] = true;
+  }
+  wanted[vtkRefractionTargets::PEEL_Z] = layers > 1;
 }
 
 //------------------------------------------------------------------------------

@@ -99,7 +99,7 @@ void vtkRefractionPass::SetDelegatePass(vtkRenderPass* delegatePass)
 void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  static const char* const names[] = { "SIR", "DIR", "ISR", "SSP" };
+  static const char* const names[] = { "SIR", "DIR", "ISR", "SSP", "PEEL" };
   os << indent << "Method: " << names[this->Method] << "\n";
   os << indent << "AdaptiveSearch: " << this->AdaptiveSearch << "\n";
   os << indent << "SecantRefinement: " << this->SecantRefinement << "\n";
@@ -115,6 +115,7 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Fresnel: " << this->Fresnel << "\n";
   os << indent << "AntiAliasing: " << this->AntiAliasing << "\n";
   os << indent << "TIRBounces: " << this->TIRBounces << "\n";
+  os << indent << "PeelLayers: " << this->PeelLayers << "\n";
   os << indent << "EnvironmentMode: "
      << (this->EnvironmentMode == ENVIRONMENT_RENDERER ? "renderer" : "builtin") << "\n";
   os << indent << "SceneRefraction: " << this->SceneRefraction << "\n";
@@ -483,6 +484,7 @@ void vtkRefractionPass::RenderGlass(
   frame.SceneRefraction = sceneRefraction;
   frame.AbsorptionDistance = this->Materials->GetAbsorptionDistance();
   frame.GlassDiagonal = this->Materials->GetLargestDiagonal();
+  frame.GlassExtent = this->Materials->GetExtentDiagonal();
   if (this->Materials->GetDispersion())
   {
     frame.RedIndex = &this->Materials->GetRedIndex();
@@ -502,13 +504,16 @@ void vtkRefractionPass::RenderGlass(
                     << " share one index of refraction (at most "
                     << vtkRefractionShadeStage::MaximumMaterials << " are told apart).");
   }
+  const int peelLayers = method->GetPeelLayers(this);
   this->GeometryStage->Configure(glass, method->NeedsNormalDistance(), dataColour,
-    this->BackSurface == BACK_SURFACE_NEAREST, this->InverseProjectionGL, this->Parallel);
+    this->BackSurface == BACK_SURFACE_NEAREST, peelLayers > 1, this->InverseProjectionGL,
+    this->Parallel);
 
   // Stages this method does not run report no time (not the last method's).
   for (int stage = 0; stage < TIMED_STAGE_COUNT; ++stage)
   {
-    const bool runs = (stage != TIMED_BACK_CAPTURE || method->NeedsBackSurface()) &&
+    const bool runs =
+      (stage != TIMED_BACK_CAPTURE || method->NeedsBackSurface() || peelLayers > 1) &&
       (stage != TIMED_DEPTH_RANGE || method->NeedsDepthRange());
     if (!runs)
     {
@@ -548,6 +553,15 @@ void vtkRefractionPass::RenderGlass(
   }
   this->StopTimer(TIMED_FRONT);
   this->NumberOfRenderedProps += this->GeometryStage->GetNumberOfDrawnProps();
+  if (peelLayers > 1)
+  {
+    this->StartTimer(TIMED_BACK_CAPTURE);
+    for (int layer = 1; layer < peelLayers; ++layer)
+    {
+      this->GeometryStage->DrawPeel(ren, this->Targets, layer);
+    }
+    this->StopTimer(TIMED_BACK_CAPTURE);
+  }
 
   this->StartTimer(TIMED_SHADE);
   this->ShadeStage->Render(ren, method, this, this->Targets, frame, materialIOR, materialSheet);

@@ -68,13 +68,17 @@ public:
    * "ISRNormalDistance", e.g. from vtkISRDistanceFilter; without it d_N = d_V). SSP (Sousa,
    * GPU Gems 2 ch. 19) perturbs the screen position of the opaque scene behind the glass by
    * the normal, with the chapter's refraction mask so that objects in front do not leak in.
+   * PEEL (Chi, Wang & Hu) peels PeelLayers layers of all the glass and follows the ray through
+   * every interface they hold: glass inside glass and glass behind glass refract each other,
+   * each with its own index, and total internal reflection is followed (TIRBounces).
    */
   enum MethodType
   {
     SIR = 0,
     DIR = 1,
     ISR = 2,
-    SSP = 3
+    SSP = 3,
+    PEEL = 4
   };
   /// The point array ISR reads d_N from.
   static const char* GetISRDistanceArrayName() { return "ISRNormalDistance"; }
@@ -148,7 +152,7 @@ public:
 
   ///@{
   /// Refraction method (DIR by default).
-  vtkSetClampMacro(Method, int, SIR, SSP);
+  vtkSetClampMacro(Method, int, SIR, PEEL);
   vtkGetMacro(Method, int);
   ///@}
 
@@ -230,15 +234,25 @@ public:
 
   ///@{
   /**
-   * DIR only: total internal reflections followed inside the glass (0 by default: the TIR
+   * DIR and PEEL: total internal reflections followed inside the glass (0 by default: the TIR
    * policy decides at the first exit). With B > 0 a ray totally reflected at its exit is
-   * mirrored there and followed through the glass between the front and the back capture
-   * (marched, then bisected) to its next exit, up to B times; the TIR policy applies after the
-   * last. Between two captured surfaces only: a ray that would cross a third one (a concave
-   * part) leaves where the two-layer picture says.
+   * mirrored there and followed to its next exit, up to B times; the TIR policy applies after
+   * the last. DIR follows it between the front and the back capture only (a ray that would
+   * cross a third surface leaves where the two-layer picture says); PEEL through its layers.
    */
   vtkSetClampMacro(TIRBounces, int, 0, 8);
   vtkGetMacro(TIRBounces, int);
+  ///@}
+
+  ///@{
+  /**
+   * PEEL: the layers of the glass captured by depth peeling, K (4 by default, as the paper),
+   * counting the front surface: 2 holds what DIR's nearest back surface holds, each further
+   * layer costs one more draw of the glass and 16 bytes per pixel. Rays follow at most
+   * K - 1 + TIRBounces interfaces after the front one.
+   */
+  vtkSetClampMacro(PeelLayers, int, 2, 8);
+  vtkGetMacro(PeelLayers, int);
   ///@}
 
   /**
@@ -342,7 +356,7 @@ public:
    */
   enum TimedStageType
   {
-    TIMED_BACK_CAPTURE = 0, ///< DIR pass 1 (DIR, ISR)
+    TIMED_BACK_CAPTURE = 0, ///< DIR pass 1 (DIR, ISR); PEEL's peeled layers
     TIMED_DEPTH_RANGE = 1,  ///< DIR pass 2 (DIR)
     TIMED_FRONT = 2,        ///< the front G-buffer (and SSP's mask and scene copy)
     TIMED_SHADE = 3,        ///< the refraction, once per glass pixel
@@ -387,6 +401,7 @@ protected:
   int DepthRangeMode = DEPTH_RANGE_REDUCTION;
   int TIRPolicy = TIR_CLAMP;
   int TIRBounces = 0;
+  int PeelLayers = 4;
   bool Fresnel = true;
   bool AntiAliasing = false;
   bool DebugOutput = false;

@@ -48,6 +48,13 @@ const TargetSampler kSamplers[] = {
   { vtkRefractionTargets::BACK_SURFACE, "rfBackSurface" },
   { vtkRefractionTargets::SCENE_COLOR, "rfSceneColor" },
   { vtkRefractionTargets::SCENE_DEPTH, "rfSceneDepth" },
+  { vtkRefractionTargets::PEEL_1, "rfPeel1" },
+  { vtkRefractionTargets::PEEL_2, "rfPeel2" },
+  { vtkRefractionTargets::PEEL_3, "rfPeel3" },
+  { vtkRefractionTargets::PEEL_4, "rfPeel4" },
+  { vtkRefractionTargets::PEEL_5, "rfPeel5" },
+  { vtkRefractionTargets::PEEL_6, "rfPeel6" },
+  { vtkRefractionTargets::PEEL_7, "rfPeel7" },
 };
 }
 
@@ -212,6 +219,10 @@ void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* 
     // The view matrix is a rotation and translation (VTK's cameras): world lengths are view
     // lengths.
     shader->SetUniformf("rfGlassDiagonal", static_cast<float>(frame.GlassDiagonal));
+  }
+  if (shader->IsUniformUsed("rfGlassExtent"))
+  {
+    shader->SetUniformf("rfGlassExtent", static_cast<float>(frame.GlassExtent));
   }
   if (shader->IsUniformUsed("rfAbsorptionDistance"))
   {

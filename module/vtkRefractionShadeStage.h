@@ -56,6 +56,7 @@ public:
     const std::vector<float>* RedIndex = nullptr;  // dispersion: red indices per material
     const std::vector<float>* BlueIndex = nullptr; // and blue ones (nullptr: no dispersion)
     double GlassDiagonal = 0.0;               // the largest glass prop's bounding-box diagonal
+    double GlassExtent = 0.0;                 // the diagonal of all the glass's bounds
     double Background[3] = { 0.0, 0.0, 0.0 };
     double Background2[3] = { 0.0, 0.0, 0.0 }; // = Background when it is not a gradient
     const double* BoundsDepthRange = nullptr;

@@ -41,6 +41,14 @@ public:
     SCENE_DEPTH,       ///< DEPTH32F: the opaque scene's depth (window coordinates)
     CORNER_COLOR,      ///< RGBA16F: anti-aliasing, the glass's colour at each pixel's lower-left
                        ///< corner, alpha 1 where the corner lies on the glass
+    PEEL_1,            ///< RGBA32F: PEEL's depth-peeled layers 1 .. 7 (layer 0 is
+    PEEL_2,            ///< FRONT_SURFACE): octahedral normal toward the viewer, -z_view,
+    PEEL_3,            ///< +-(material + 1), positive where the outward side faces the viewer
+    PEEL_4,
+    PEEL_5,
+    PEEL_6,
+    PEEL_7,
+    PEEL_Z,            ///< DEPTH32F: the depth test of the peeling
     DEBUG_0,           ///< RGBA32F: P2 and |P2 - P1|
     DEBUG_1,           ///< RGBA32F: T2 and the flags
     TARGET_COUNT

@@ -16,6 +16,11 @@
 //    against. With RF_BACK_NEAREST (beyond the paper) the nearest back-facing surface is kept
 //    (GL_LESS, front faces discarded by winding, flipped for meshes wound inward): on shapes
 //    of several parts it is the surface the refracted ray leaves through far more often.
+//  4 peel (with RF_PEEL_CAPTURE): one depth-peeled layer of the PEEL method (Chi, Wang & Hu,
+//    seed 004; Everitt's depth peeling): the nearest surface behind the previous layer
+//    (rfPeelPrevious; layer 0 is the front G-buffer), both faces drawn: the normal turned
+//    toward the viewer (octahedral), -z_view, and +-(material index + 1), positive where the
+//    outward side faces the viewer (rfOutwardFront: whether that is the GL front face).
 //  3 mask: SSP's refraction mask (Sousa, GPU Gems 2 ch. 19, listing 19-2), blended into the
 //    framebuffer's alpha.
 // Defined by the stage: RF_POSITION_VC and RF_NORMAL_VC (the mapper's view-space position and
@@ -26,6 +31,10 @@ uniform float rfMaterial;
 uniform int rfParallel;
 uniform mat4 rfDCVC;
 uniform vec4 rfViewport;
+#ifdef RF_PEEL_CAPTURE
+uniform sampler2D rfPeelPrevious;
+uniform int rfOutwardFront;
+#endif
 #ifdef RF_GBUFFER_NORMAL_DISTANCE
 in float rfNormalDistanceVSOut;
 uniform int rfHaveNormalDistance;
@@ -76,6 +85,22 @@ vec3 rfReconstructPositionVC()
     vec3 rfP = RF_POSITION_VC;
     vec3 rfN = rfSafeNormal(RF_NORMAL_VC, rfP);
     vec3 rfV = rfViewDirection(rfP);
+#ifdef RF_PEEL_CAPTURE
+    if (rfGeometryStage == 4)
+    {
+      // Exactly the previous layer's fragment computes the same -z again: <= peels it off.
+      float rfPrevious =
+        texelFetch(rfPeelPrevious, ivec2(gl_FragCoord.xy - rfViewport.xy), 0).z;
+      if (!(rfPrevious > 0.0) || -rfP.z <= rfPrevious)
+      {
+        discard;
+      }
+      bool rfOutwardToViewer = gl_FrontFacing == (rfOutwardFront == 1);
+      gl_FragData[0] = vec4(rf_oct_encode(dot(rfN, rfV) > 0.0 ? -rfN : rfN), -rfP.z,
+        rfOutwardToViewer ? rfMaterial : -rfMaterial);
+    }
+    else
+#endif
     if (rfGeometryStage == 3)
     {
       gl_FragData[0] = vec4(0.0, 0.0, 0.0, 0.5); // blended to 0.25 + 0.5 alpha

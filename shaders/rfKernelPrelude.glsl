@@ -112,3 +112,20 @@
 #endif
 #define rf_sample_depth(map, tc, size) \
   texelFetch(map, ivec2(min((tc) * (size), (size) - 1.0)), 0).RF_DEPTH_CHANNEL
+#define rf_float_of(x) float(x)
+
+// Depth-peeled layers and the materials (rf_kernel_peel.h): GLSL passes no array of samplers
+// or uniforms, so the kernel's handles are plain ints and the stage that defines RF_PEEL_LAYERS
+// provides the two lookups (shaders/rfMethodPEEL.glsl); the material table's handle is the
+// colour channel whose indices are read (dispersion).
+#ifdef RF_PEEL_LAYERS
+#define rf_layer_stack int
+#define rf_material_table int
+vec4 rfPeelLayerTexel(ivec2 texel, int layer);
+float rfPeelMaterialIOR(int material, int channel);
+bool rfPeelMaterialSheet(int material);
+#define rf_layer_texel(layers, tc, size, i) \
+  rfPeelLayerTexel(ivec2(min((tc) * (size), (size) - 1.0)), i)
+#define rf_material_ior(materials, m) rfPeelMaterialIOR(m, materials)
+#define rf_material_is_sheet(materials, m) rfPeelMaterialSheet(m)
+#endif

@@ -4,7 +4,7 @@
 // at the front surface, asks the method for the exit point and normal (rfFindExit, from
 // rfMethod<NAME>.glsl) and refracts again into the environment. Writes the glass's colour and
 // its depth, so the opaque scene's depth test keeps hidden glass hidden.
-// Defines set by the pass: RF_METHOD_{SIR,DIR,ISR,SSP}, RF_TIR_CLAMP, RF_FRESNEL,
+// Defines set by the pass: RF_METHOD_{SIR,DIR,ISR,SSP,PEEL}, RF_TIR_CLAMP, RF_FRESNEL,
 // RF_ENV_CUBEMAP or RF_ENV_BACKGROUND (else the built-in environment), RF_SCENE_REFRACTION,
 // RF_SCENE_STEPS, RF_TINT, RF_DISPERSION, RF_MAX_MATERIALS, RF_DEBUG_OUTPUT, RF_CORNER_SAMPLES
 // (anti-aliasing: the pixels' corners into the corner target instead of the pixels) and the
@@ -182,13 +182,30 @@ vec3 rfBehind(vec3 P, vec3 T)
   return rfEnvironment(T);
 }
 
+// The index of refraction of a material for a colour channel (0 red, 1 green, 2 blue); the
+// green one without dispersion.
+float rfMaterialIndexOfRefraction(int material, int channel)
+{
+#ifdef RF_DISPERSION
+  if (channel == 0)
+  {
+    return rfMaterialIORRed[material];
+  }
+  if (channel == 2)
+  {
+    return rfMaterialIORBlue[material];
+  }
+#endif
+  return rfMaterialIOR[material];
+}
+
 //RF::Method
 
 //VTK::Output::Dec
 
 // One ray through texture coordinate tc that meets the glass (material index material) at
-// view depth -z = depth with the viewer-facing unit normal N1: its colour, and for the debug
-// output the exit point, exit direction and TIR flags.
+// view depth -z = depth with the viewer-facing unit normal N1, for the indices of one colour
+// channel: its colour, and for the debug output the exit point, exit direction and TIR flags.
 struct rfRay
 {
   vec3 colour;
@@ -198,9 +215,10 @@ struct rfRay
   int tir;
 };
 
-rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, float ior)
+rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, int channel)
 {
   rfRay ray;
+  float ior = rfMaterialIndexOfRefraction(material, channel);
   float sheet = rfMaterialSheet[material];
   vec3 P = rfPositionFromDepth(tc, depth);
   vec3 V = rfViewDirection(P);
@@ -213,6 +231,9 @@ rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, float ior)
   vec3 P2 = P;
   int tir = tirIn ? 2 : 0;
   vec3 N2;
+#ifdef RF_METHOD_PEEL
+  float insideLength = 0.0;
+#endif
   if (!tirIn && sheet > 0.0)
   {
     // A thin sheet: a slab of thickness sheet. The ray crosses it along T1 and leaves
@@ -220,6 +241,15 @@ rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, float ior)
     P2 = P + (sheet / max(-dot(T1, N1), 1e-3)) * T1;
     T2 = V;
   }
+#ifdef RF_METHOD_PEEL
+  else if (!tirIn)
+  {
+    // Every interface the layers hold (rfMethodPEEL.glsl); TIR flag 1 where a reflection ended
+    // the trace, as the two-interface methods flag a TIR exit.
+    int bounces = rfPeelTrace(P, T1, material, channel, P2, T2, insideLength);
+    tir = bounces >= 16 ? 1 : 0;
+  }
+#else
   else if (!tirIn && rfFindExit(P, V, N1, T1, etaIn, P2, N2))
   {
     tir = rfRefractWithPolicy(T1, -normalize(N2), ior, T2);
@@ -242,6 +272,7 @@ rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, float ior)
     }
 #endif
   }
+#endif
   ray.P1 = P;
   ray.P2 = P2;
   ray.T2 = T2;
@@ -260,7 +291,11 @@ rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, float ior)
   // glass; along the measured path |P2 - P1| it keeps colour^(|P2 - P1| / distance). Where no
   // exit was found (SIR, TIR at the entry) the path is taken as that distance.
   vec3 tint = texelFetch(rfFrontColour, rfPixel, 0).rgb;
+#ifdef RF_METHOD_PEEL
+  float path = insideLength > 0.0 ? insideLength : rfAbsorptionDistance;
+#else
   float path = length(P2 - P) > 0.0 ? length(P2 - P) : rfAbsorptionDistance;
+#endif
   transmitted *= pow(max(tint, vec3(1.0 / 255.0)), vec3(path / rfAbsorptionDistance));
 #endif
   ray.colour = F * rfEnvironment(reflect(V, N1)) + (1.0 - F) * transmitted;
@@ -272,10 +307,10 @@ rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, float ior)
 // index (the green one is the ray of the debug output).
 vec3 rfShadeColour(vec2 tc, vec3 N1, float depth, int material)
 {
-  vec3 colour = rfShadeRay(tc, N1, depth, material, rfMaterialIOR[material]).colour;
+  vec3 colour = rfShadeRay(tc, N1, depth, material, 1).colour;
 #ifdef RF_DISPERSION
-  colour.r = rfShadeRay(tc, N1, depth, material, rfMaterialIORRed[material]).colour.r;
-  colour.b = rfShadeRay(tc, N1, depth, material, rfMaterialIORBlue[material]).colour.b;
+  colour.r = rfShadeRay(tc, N1, depth, material, 0).colour.r;
+  colour.b = rfShadeRay(tc, N1, depth, material, 2).colour.b;
 #endif
   return colour;
 }
@@ -348,7 +383,7 @@ void main()
   int rfMaterial = clamp(int(rfFront.w + 0.5) - 1, 0, RF_MAX_MATERIALS - 1);
   vec3 rfN1 = rf_oct_decode(rfFront.xy);
 #ifdef RF_DEBUG_OUTPUT
-  rfRay rfCentre = rfShadeRay(texCoord, rfN1, rfFront.z, rfMaterial, rfMaterialIOR[rfMaterial]);
+  rfRay rfCentre = rfShadeRay(texCoord, rfN1, rfFront.z, rfMaterial, 1);
   gl_FragData[0] = vec4(rfCentre.P2, length(rfCentre.P2 - rfCentre.P1));
   gl_FragData[1] = vec4(rfCentre.T2, 1.0 + float(rfCentre.tir));
 #else

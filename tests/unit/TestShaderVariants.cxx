@@ -163,6 +163,16 @@ int main()
     // EGL frames show the same, before and after the kernel): a defect of the pass's scene
     // capture, not of the shader, which compiles (no error) and draws under X.
     { "SSP", [](vtkRefractionPass* p) { p->SetMethod(vtkRefractionPass::SSP); }, true, false },
+    { "PEEL (K = 4)", [](vtkRefractionPass* p) { p->SetMethod(vtkRefractionPass::PEEL); },
+      true, true },
+    { "PEEL K = 8, TIR followed twice, reflect policy",
+      [](vtkRefractionPass* p) {
+        p->SetMethod(vtkRefractionPass::PEEL);
+        p->SetPeelLayers(8);
+        p->SetTIRBounces(2);
+        p->SetTIRPolicy(vtkRefractionPass::TIR_REFLECT);
+      },
+      true, true },
     { "all non-defaults",
       [](vtkRefractionPass* p) {
         p->SetTIRPolicy(vtkRefractionPass::TIR_REFLECT);

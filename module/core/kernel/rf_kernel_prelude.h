@@ -165,4 +165,41 @@ static inline double rf_sample_depth(rf_depth_map map, rf_float2 tc, rf_float2 s
   return map.sample(map.context, at);
 }
 
+static inline double rf_float_of(int x) { return (double)x; }
+
+/* Depth-peeled layers (rf_kernel_peel.h): texel(context, tc, layer) returns layer `layer` at
+ * texture coordinates tc in [0, 1]^2 as the GLSL side's texelFetch of the nearest texel. */
+typedef struct rf_layer_stack
+{
+  rf_float4 (*texel)(void* context, const double tc[2], int layer);
+  void* context;
+} rf_layer_stack;
+
+static inline rf_float4 rf_layer_texel(rf_layer_stack layers, rf_float2 tc, rf_float2 size, int i)
+{
+  double at[2];
+  (void)size;
+  at[0] = tc.x;
+  at[1] = tc.y;
+  return layers.texel(layers.context, at, i);
+}
+
+/* The glass materials by index: their index of refraction, and whether each is a thin sheet. */
+typedef struct rf_material_table
+{
+  const double* ior;
+  const int* sheet; /* may be NULL: no sheets */
+  int count;
+} rf_material_table;
+
+static inline double rf_material_ior(rf_material_table materials, int m)
+{
+  return materials.ior[m < 0 ? 0 : (m < materials.count ? m : materials.count - 1)];
+}
+
+static inline rf_bool rf_material_is_sheet(rf_material_table materials, int m)
+{
+  return materials.sheet && m >= 0 && m < materials.count && materials.sheet[m] != 0;
+}
+
 #endif /* RF_KERNEL_PRELUDE_H */

@@ -1,0 +1,287 @@
+/* rf_kernel_peel.h (kernel dialect, C and GLSL): a ray followed through K depth-peeled layers
+ * of the glass, Chi, Wang & Hu (seed 004): the transmitted ray is marched with a linear search
+ * against the layers, each change of side is refined by bisection, and the result is told apart
+ * from a fault zone (section 3.1: a discontinuity of the peeled layers) by the paper's test on
+ * the final bracket (the depth difference X of the crossed layer across it must shrink below
+ * the linear step). Beyond the paper, all K layers are searched at once: a ray point's side is
+ * how many layers at its texel lie in front of it, which changes exactly where the ray crosses
+ * a layer, so the layers need no pairing (the paper's combination of layers 2-4 and 1-3,
+ * section 3.1.2, is what this count does implicitly). Several glass actors, nested or
+ * overlapping, share the layers: each texel carries its material, and the medium the ray is in
+ * is kept on a small stack (entering a surface pushes its material, leaving pops), so nested
+ * glass refracts by the ratio of its index to the enclosing one. Total internal reflection is
+ * followed up to a number of bounces (section 3.2), then the TIR policy decides.
+ *
+ * A layer texel (what shaders/rfGeometryFS.glsl writes): x, y the octahedral view-space normal
+ * turned toward the viewer, z the depth -z_view (0: empty), w = +-(material + 1), positive
+ * where the surface's outward side faces the viewer. Layers are sorted by depth at each texel
+ * (peeling makes them so) and the empty ones come last.
+ *
+ * Two resources GLSL cannot pass as arguments (an array of samplers, an array of indices) are
+ * reached through macros the including side defines: rf_layer_texel(layers, tc, size, i) and
+ * rf_material_ior(materials, m) / rf_material_is_sheet(materials, m); in C rf_layer_stack and
+ * rf_material_table are structs of callbacks and arrays (rf_kernel_prelude.h), in GLSL plain
+ * handles the stage resolves (shaders/rfMethodPEEL.glsl). */
+#ifndef RF_KERNEL_PEEL_H
+#define RF_KERNEL_PEEL_H
+
+#ifndef RF_GLSL
+#include "rf_kernel_dir.h"
+#include "rf_kernel_octahedral.h"
+#include "rf_kernel_optics.h"
+#include "rf_kernel_prelude.h"
+#endif
+
+#if !defined(RF_GLSL) || defined(RF_PEEL_LAYERS)
+
+#define RF_PEEL_MAX_LAYERS 8
+/* Linear search steps per segment (the paper settles on 50 over the depth range, section 4.4;
+ * here the segment is at most the glass's diagonal) and bisections of a crossing. */
+#define RF_PEEL_MARCH_STEPS 32
+#define RF_PEEL_MARCH_STEPS_REAL 32.0
+#define RF_PEEL_BISECTIONS 6
+/* Glass a ray can be inside at once: materials + 1 in 7-bit fields of an int, innermost low. */
+#define RF_PEEL_STACK_DEPTH 4
+
+/* rfk_peel_next_crossing's results. */
+#define RF_PEEL_NONE 0    /* no crossing before the segment's end (or the image's edge) */
+#define RF_PEEL_SURFACE 1 /* a crossing of a layer */
+#define RF_PEEL_EDGE 2    /* inside the glass, the ray left its footprint on screen */
+
+/* The texture coordinates of P inside the image and in front of the camera; false outside. */
+RF_KERNEL rf_bool rfk_peel_on_image(rfk_camera camera, rf_float3 P, RF_OUT(rf_float2) tc)
+{
+  rf_float4 clip = rfk_clip_of(camera, P);
+  RF_DEREF(tc) = rf_make2(0.0, 0.0);
+  if (!(clip.w > 0.0))
+  {
+    return RF_FALSE;
+  }
+  rf_float2 t = rfk_texture_of_clip(clip);
+  RF_DEREF(tc) = t;
+  return t.x >= 0.0 && t.y >= 0.0 && t.x <= 1.0 && t.y <= 1.0;
+}
+
+/* How many of the first `count` layers at tc lie in front of depth (nearer the eye). */
+RF_KERNEL int rfk_peel_side(rf_layer_stack layers, int count, rf_float2 tc, rf_float2 size,
+  rf_float depth)
+{
+  int side = 0;
+  for (int i = 0; i < count; ++i)
+  {
+    rf_float stored = rf_layer_texel(layers, tc, size, i).z;
+    if (stored > 0.0 && stored < depth)
+    {
+      side = side + 1;
+    }
+  }
+  return side;
+}
+
+/* The side of the ray point P + t T (-1 off the image). */
+RF_KERNEL int rfk_peel_side_at(rf_layer_stack layers, int count, rfk_camera camera, rf_float3 P,
+  rf_float3 T, rf_float t)
+{
+  rf_float3 Q = rf_add3(P, rf_scale3(T, t));
+  rf_float2 tc;
+  if (!rfk_peel_on_image(camera, Q, RF_ADDR(tc)))
+  {
+    return -1;
+  }
+  return rfk_peel_side(layers, count, tc, camera.viewportSize, -Q.z);
+}
+
+/* The next crossing of the ray P + t T, 0 < t <= tEnd, with the layers, starting on side
+ * `side` (how many layers lie in front of the ray just after P). Writes the crossing point,
+ * its texture coordinates and the crossed layer's index there; returns RF_PEEL_SURFACE, or
+ * RF_PEEL_EDGE where a ray `inside` the glass passes onto texels with no glass at all (the
+ * surface it left through is too steep for the layers to hold: the layer at the last texel
+ * on the glass nearest the ray stands in), or RF_PEEL_NONE. */
+RF_KERNEL int rfk_peel_next_crossing(rf_layer_stack layers, int count, rfk_camera camera,
+  rf_float3 P, rf_float3 T, int side, rf_float tEnd, rf_bool inside, RF_OUT(rf_float3) hit,
+  RF_OUT(rf_float2) hitTC, RF_OUT(int) hitLayer)
+{
+  RF_DEREF(hit) = P;
+  RF_DEREF(hitTC) = rf_make2(0.0, 0.0);
+  RF_DEREF(hitLayer) = 0;
+  if (!(tEnd > 0.0))
+  {
+    return RF_PEEL_NONE;
+  }
+  rf_float dt = tEnd / RF_PEEL_MARCH_STEPS_REAL;
+  int before = side;
+  for (int i = 1; i <= RF_PEEL_MARCH_STEPS; ++i)
+  {
+    rf_float t = dt * rf_float_of(i);
+    int now = rfk_peel_side_at(layers, count, camera, P, T, t);
+    if (now < 0)
+    {
+      return RF_PEEL_NONE; /* the layers hold nothing beyond the image */
+    }
+    if (now != before)
+    {
+      rf_float lo = t - dt;
+      rf_float hi = t;
+      for (int j = 0; j < RF_PEEL_BISECTIONS; ++j)
+      {
+        rf_float mid = 0.5 * (lo + hi);
+        if (rfk_peel_side_at(layers, count, camera, P, T, mid) == before)
+        {
+          lo = mid;
+        }
+        else
+        {
+          hi = mid;
+        }
+      }
+      rf_float3 nearQ = rf_add3(P, rf_scale3(T, lo));
+      rf_float3 farQ = rf_add3(P, rf_scale3(T, hi));
+      rf_float2 nearTC;
+      rf_float2 farTC;
+      rfk_peel_on_image(camera, nearQ, RF_ADDR(nearTC));
+      rfk_peel_on_image(camera, farQ, RF_ADDR(farTC));
+      rf_float2 size = camera.viewportSize;
+      int farSide = rfk_peel_side(layers, count, farTC, size, -farQ.z);
+      /* Going deeper the ray passed behind layer farSide - 1; coming forward it passed in
+       * front of layer farSide. */
+      int crossedLayer = farSide > before ? farSide - 1 : farSide;
+      rf_float farDepth = rf_layer_texel(layers, farTC, size, crossedLayer).z;
+      rf_float nearDepth = rf_layer_texel(layers, nearTC, size, crossedLayer).z;
+      /* The paper's fault test: across the final bracket the crossed layer's depth changes by
+       * X; on a surface X shrinks with the bracket, at a fault it stays the jump. */
+      rf_float X = rf_abs(farDepth - nearDepth);
+      if (farDepth > 0.0 && nearDepth > 0.0 && X <= dt &&
+        rf_abs(-farQ.z - farDepth) <= dt)
+      {
+        RF_DEREF(hit) = farQ;
+        RF_DEREF(hitTC) = farTC;
+        RF_DEREF(hitLayer) = crossedLayer;
+        return RF_PEEL_SURFACE;
+      }
+      if (inside && !(rf_layer_texel(layers, farTC, size, 0).z > 0.0))
+      {
+        /* Off the glass's footprint from inside: through the layer nearest the ray at the
+         * last texel on the glass (before - 1 in front of it, before behind it). */
+        rf_float depth = -nearQ.z;
+        int front = before > 0 ? before - 1 : 0;
+        rf_float frontDepth = rf_layer_texel(layers, nearTC, size, front).z;
+        rf_float backDepth = before < count ? rf_layer_texel(layers, nearTC, size, before).z : 0.0;
+        rf_bool useBack = backDepth > 0.0 && (before == 0 || backDepth - depth < depth - frontDepth);
+        RF_DEREF(hit) = rf_scale3(rf_add3(nearQ, farQ), 0.5);
+        RF_DEREF(hitTC) = nearTC;
+        RF_DEREF(hitLayer) = useBack ? before : front;
+        return RF_PEEL_EDGE;
+      }
+      /* A fault zone (the paper's case 2): go on from the side found beyond it. */
+      before = farSide;
+    }
+  }
+  return RF_PEEL_NONE;
+}
+
+/* The innermost glass of a medium stack, -1 when the ray is outside every glass. */
+RF_KERNEL int rfk_peel_stack_top(int stack)
+{
+  return (stack & 127) - 1;
+}
+
+RF_KERNEL int rfk_peel_stack_push(int stack, int material)
+{
+  /* A ray inside more glass than the stack holds forgets the outermost. */
+  return ((stack << 7) & 268435455) | (material + 1);
+}
+
+RF_KERNEL int rfk_peel_stack_pop(int stack)
+{
+  return stack >> 7;
+}
+
+/* The index of refraction of the medium a stack describes (1: outside every glass). */
+RF_KERNEL rf_float rfk_peel_medium_ior(rf_material_table materials, int stack)
+{
+  int top = rfk_peel_stack_top(stack);
+  return top < 0 ? 1.0 : rf_material_ior(materials, top);
+}
+
+/* The ray after the front surface: entered at P1 (on layer 0) into glass `material`, unit
+ * direction T1 inside. Followed through at most `interfaces` further crossings, of which at
+ * most `bounces` may totally reflect (one more takes tirPolicy's direction and ends the trace),
+ * each segment searched up to tLimit (the glass's extent) and the frustum. Writes where and in
+ * which direction the ray leaves the captured glass, and the length it travelled inside;
+ * returns the bounces followed, + 16 when TIR ended the trace. */
+RF_KERNEL int rfk_peel_trace(rf_layer_stack layers, int count, rf_material_table materials,
+  rfk_camera camera, rf_float3 P1, rf_float3 T1, int material, int interfaces, int bounces,
+  int tirPolicy, rf_float tLimit, RF_OUT(rf_float3) P2, RF_OUT(rf_float3) T2,
+  RF_OUT(rf_float) insideLength)
+{
+  rf_float3 P = P1;
+  rf_float3 T = T1;
+  int stack = rfk_peel_stack_push(0, material);
+  int side = 1;
+  int reflected = 0;
+  int ended = 0;
+  rf_float travelled = 0.0;
+  for (int k = 0; k < interfaces; ++k)
+  {
+    rf_float tEnd = rf_min(rfk_frustum_exit(camera, P, T), tLimit);
+    rf_float3 Q;
+    rf_float2 tc;
+    int hitLayer;
+    int found = rfk_peel_next_crossing(layers, count, camera, P, T, side, tEnd,
+      rfk_peel_stack_top(stack) >= 0, RF_ADDR(Q), RF_ADDR(tc), RF_ADDR(hitLayer));
+    if (found == RF_PEEL_NONE)
+    {
+      break;
+    }
+    rf_float4 texel = rf_layer_texel(layers, tc, camera.viewportSize, hitLayer);
+    rf_float3 towardViewer = rf_oct_decode(rf_make2(texel.x, texel.y));
+    rf_float3 outward = texel.w < 0.0 ? rf_neg3(towardViewer) : towardViewer;
+    int crossed = rf_int_of(rf_abs(texel.w) + 0.5) - 1;
+    if (rfk_peel_stack_top(stack) >= 0)
+    {
+      travelled = travelled + rf_length3(rf_sub3(Q, P));
+    }
+    P = Q;
+    if (found == RF_PEEL_EDGE)
+    {
+      /* Left through the edge: the surface there faces the ray's way out. */
+      outward = rf_dot3(outward, T) < 0.0 ? rf_neg3(outward) : outward;
+    }
+    rf_bool entering = rf_dot3(T, outward) < 0.0;
+    if (crossed >= 0 && rf_material_is_sheet(materials, crossed))
+    {
+      /* A thin sheet: crossed without bending (its two faces are parallel). */
+      side = rf_dot3(T, towardViewer) < 0.0 ? hitLayer + 1 : hitLayer;
+      continue;
+    }
+    int beyond = entering ? rfk_peel_stack_push(stack, crossed) : rfk_peel_stack_pop(stack);
+    rf_float eta = rfk_peel_medium_ior(materials, stack) / rfk_peel_medium_ior(materials, beyond);
+    rf_float3 next;
+    if (rfk_refract(T, outward, eta, RF_TIR_POLICY_REFLECT, RF_ADDR(next)) ==
+      RF_TOTAL_INTERNAL_REFLECTION)
+    {
+      if (reflected >= bounces)
+      {
+        rfk_refract(T, outward, eta, tirPolicy, RF_ADDR(next));
+        T = next;
+        ended = 16;
+        break;
+      }
+      reflected = reflected + 1;
+    }
+    else
+    {
+      stack = beyond;
+    }
+    T = next;
+    side = rf_dot3(T, towardViewer) < 0.0 ? hitLayer + 1 : hitLayer;
+  }
+  RF_DEREF(P2) = P;
+  RF_DEREF(T2) = T;
+  RF_DEREF(insideLength) = travelled;
+  return reflected + ended;
+}
+
+#endif /* !RF_GLSL || RF_PEEL_LAYERS */
+
+#endif /* RF_KERNEL_PEEL_H */

@@ -108,7 +108,7 @@ struct Options
 
 struct Setting
 {
-  std::string Method; // none (the pass without glass), SIR, DIR, ISR, SSP
+  std::string Method; // none (the pass without glass), SIR, DIR, ISR, SSP, PEEL
   int Steps = 5;
   bool Bounds = false;
   bool Adaptive = false;
@@ -117,10 +117,15 @@ struct Setting
   bool NoScene = false; // SetSceneRefraction(false): the opaque scene is not refracted (NG off)
   bool AntiAliasing = false; // SetAntiAliasing(true): four rays per pixel
   int Bounces = 0;           // SetTIRBounces: total internal reflections followed
+  int Layers = 0;            // PEEL: SetPeelLayers (K)
   std::string Label() const
   {
     std::ostringstream s;
     s << Method;
+    if (Method == "PEEL")
+    {
+      s << " " << Layers;
+    }
     if (Method == "DIR")
     {
       s << (Adaptive ? " adaptive<=" : " ") << Steps << (Bounds ? " bbox" : "")
@@ -207,9 +212,10 @@ bool Parse(int argc, char* argv[], Options& o)
   args.AddArgument("--sizes", Args::SPACE_ARGUMENT, &sizes,
     "Window sizes in pixels, comma-separated, 8..4096 (default 256,512,1024).");
   args.AddArgument("--meshes", Args::SPACE_ARGUMENT, &meshes,
-    "Meshes, comma-separated: sphere, torus, isosurface, bunny (default all four), and scene "
+    "Meshes, comma-separated: sphere, torus, isosurface, bunny (default all four), scene "
     "(the sphere in front of a checkerboard and axes over a gradient background: DIR 5 with "
-    "the scene's refraction on and off).");
+    "the scene's refraction on and off) and nested (nested contours: the isosurface's blobs, "
+    "IOR 1.5, holding the contour of a higher value as a second glass actor of IOR 1.9).");
   args.AddArgument("--frames", Args::SPACE_ARGUMENT, &frames,
     "Timed frames per repeat of a row, after 5 warm-up frames (default 30).");
   args.AddArgument("--repeats", Args::SPACE_ARGUMENT, &repeats,
@@ -227,9 +233,9 @@ bool Parse(int argc, char* argv[], Options& o)
   args.AddArgument("--from-csv", Args::SPACE_ARGUMENT, &o.FromCsv,
     "Remake results.md and pareto.png from an earlier results.csv, without running.");
   args.AddBooleanArgument("--quick", &o.Quick,
-    "The four meshes at 512x512: DIR (5 steps; also with anti-aliasing, and with two total "
-    "internal reflections followed), SIR, each with its plain render, 3 repeats (a few "
-    "minutes).");
+    "The four meshes and nested at 512x512: DIR (5 steps; also with anti-aliasing, and with "
+    "two total internal reflections followed), SIR, PEEL with 2, 4 and 8 layers (and 4 with "
+    "two reflections followed), each with its plain render, 3 repeats.");
   args.AddBooleanArgument("--smoke", &o.Smoke,
     "64x64, sphere and torus, 5 frames, every method once: the ctest smoke run.");
   args.AddBooleanArgument("--x11", &o.X11, "Render through an X window instead of EGL.");
@@ -249,7 +255,7 @@ bool Parse(int argc, char* argv[], Options& o)
   if (o.Quick)
   {
     o.Sizes = { 512 };
-    o.Meshes = { "sphere", "torus", "isosurface", "bunny" };
+    o.Meshes = { "sphere", "torus", "isosurface", "bunny", "nested" };
   }
   if (o.Smoke)
   {
@@ -278,7 +284,7 @@ bool Parse(int argc, char* argv[], Options& o)
     for (const auto& name : o.Meshes)
     {
       if (name != "sphere" && name != "torus" && name != "isosurface" && name != "bunny" &&
-        name != "scene")
+        name != "scene" && name != "nested")
       {
         std::fprintf(stderr, "--meshes: unknown mesh '%s'\n", name.c_str());
         return false;
@@ -328,6 +334,9 @@ std::string HostKind(const std::string& renderer)
   return kind.empty() ? "unknown" : kind;
 }
 
+// The nested mesh's inner contour, as a multiple of the metaballs' iso value.
+const double kNestedInnerValue = 2.0;
+
 // The mesh, with d_N for ISR added by the filter (which other methods ignore).
 vtkSmartPointer<vtkAlgorithm> MakeMesh(const std::string& name, const Options& o)
 {
@@ -360,13 +369,13 @@ vtkSmartPointer<vtkAlgorithm> MakeMesh(const std::string& name, const Options& o
     normals->SetInputConnection(clean->GetOutputPort());
     source = normals;
   }
-  else if (name == "isosurface")
+  else if (name == "isosurface" || name == "nested" || name == "nested-inner")
   {
     auto blobs = vtkSmartPointer<vtkMetaballsSource>::New();
     blobs->SetSampleDimensions(o.Smoke ? 32 : 80);
     auto surface = vtkSmartPointer<vtkFlyingEdges3D>::New();
     surface->SetInputConnection(blobs->GetOutputPort());
-    surface->SetValue(0, blobs->GetIsoValue());
+    surface->SetValue(0, (name == "nested-inner" ? kNestedInnerValue : 1.0) * blobs->GetIsoValue());
     surface->ComputeNormalsOn();
     surface->UpdateTimeStep(0.3 * blobs->GetTimePeriod());
     source = surface;
@@ -797,6 +806,8 @@ std::vector<Column> Columns(int stageCount)
     [](Row& r, const std::string& v) { r.Config.NoScene = v == "0"; } });
   c.push_back({ "tir_bounces", [](const Row& r) { return std::to_string(r.Config.Bounces); },
     [](Row& r, const std::string& v) { r.Config.Bounces = std::atoi(v.c_str()); } });
+  c.push_back({ "peel_layers", [](const Row& r) { return std::to_string(r.Config.Layers); },
+    [](Row& r, const std::string& v) { r.Config.Layers = std::atoi(v.c_str()); } });
   c.push_back({ "anti_aliasing",
     [](const Row& r) { return std::string(r.Config.AntiAliasing ? "1" : "0"); },
     [](Row& r, const std::string& v) { r.Config.AntiAliasing = v == "1"; } });
@@ -1076,9 +1087,10 @@ bool WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
   view->GetScene()->AddItem(matrix);
   matrix->SetSize(vtkVector2i(columns, rowsCount));
   const char* families[] = { "SIR", "DIR reduction", "DIR bbox", "DIR adaptive", "ISR", "SSP",
-    "DIR paper (no secant)", "DIR nearest back" };
+    "DIR paper (no secant)", "DIR nearest back", "PEEL" };
   const unsigned char colours[][3] = { { 120, 120, 120 }, { 31, 119, 180 }, { 255, 127, 14 },
-    { 44, 160, 44 }, { 214, 39, 40 }, { 148, 103, 189 }, { 140, 86, 75 }, { 23, 190, 207 } };
+    { 44, 160, 44 }, { 214, 39, 40 }, { 148, 103, 189 }, { 140, 86, 75 }, { 23, 190, 207 },
+    { 227, 119, 194 } };
   for (size_t m = 0; m < meshes.size(); ++m)
   {
     vtkChart* chart = matrix->GetChart(vtkVector2i(static_cast<int>(m % columns),
@@ -1088,7 +1100,7 @@ bool WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
     chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE against the supersampled full reference");
     chart->SetShowLegend(m == 0);
     double largest[2] = { 0.0, 0.0 }; // x, y over every plotted point
-    for (int family = 0; family < 8; ++family)
+    for (int family = 0; family < 9; ++family)
     {
       vtkNew<vtkTable> table;
       vtkNew<vtkFloatArray> x;
@@ -1104,7 +1116,8 @@ bool WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
           r.Config.NoScene)
           continue;
         const std::string& method = r.Config.Method;
-        const int f = method == "SIR" ? 0
+        const int f = method == "PEEL" ? 8
+          : method == "SIR" ? 0
           : method == "ISR" ? 4
           : method == "SSP" ? 5
           : r.Config.Paper ? 6 : r.Config.Nearest ? 7 : r.Config.Adaptive ? 3 : r.Config.Bounds ? 2 : 1;
@@ -1259,18 +1272,28 @@ std::vector<Setting> Settings(const Options& o)
   antiAliased.AntiAliasing = true;
   Setting bounces{ "DIR", 5 };
   bounces.Bounces = 2;
+  auto peel = [](int layers, int tirBounces) {
+    Setting setting{ "PEEL", 0 };
+    setting.Layers = layers;
+    setting.Bounces = tirBounces;
+    return setting;
+  };
   if (o.Quick)
   {
     settings.push_back({ "DIR", 5 });
     settings.push_back(antiAliased);
     settings.push_back(bounces);
     settings.push_back({ "SIR", 0 });
+    for (int layers : { 2, 4, 8 })
+      settings.push_back(peel(layers, 0));
+    settings.push_back(peel(4, 2));
     return settings;
   }
   if (o.Smoke)
   {
     for (const char* method : { "SIR", "DIR", "ISR", "SSP" })
       settings.push_back({ method, 5 });
+    settings.push_back(peel(4, 2));
     return settings;
   }
   settings.push_back({ "none", 0 });
@@ -1289,6 +1312,9 @@ std::vector<Setting> Settings(const Options& o)
   settings.push_back(bounces);
   settings.push_back({ "ISR", 0 });
   settings.push_back({ "SSP", 0 });
+  for (int layers : { 2, 4, 8 })
+    for (int tirBounces : { 0, 2, 4 })
+      settings.push_back(peel(layers, tirBounces));
   return settings;
 }
 
@@ -1303,9 +1329,11 @@ std::vector<Setting> SceneSettings()
 
 int MethodId(const std::string& m)
 {
-  return m == "SIR" ? vtkRefractionPass::SIR
-                    : m == "ISR" ? vtkRefractionPass::ISR
-                                 : m == "SSP" ? vtkRefractionPass::SSP : vtkRefractionPass::DIR;
+  return m == "SIR"   ? vtkRefractionPass::SIR
+    : m == "ISR"        ? vtkRefractionPass::ISR
+    : m == "SSP"        ? vtkRefractionPass::SSP
+    : m == "PEEL"       ? vtkRefractionPass::PEEL
+                        : vtkRefractionPass::DIR;
 }
 
 void Apply(vtkRefractionPass* pass, const Setting& setting)
@@ -1321,6 +1349,7 @@ void Apply(vtkRefractionPass* pass, const Setting& setting)
   pass->SetSceneRefraction(!setting.NoScene);
   pass->SetAntiAliasing(setting.AntiAliasing);
   pass->SetTIRBounces(setting.Bounces);
+  pass->SetPeelLayers(std::max(setting.Layers, 2));
 }
 
 // One mesh in the scene: its actor, the opaque actors around it, and what the rows report.
@@ -1330,8 +1359,28 @@ struct Scene
   vtkSmartPointer<vtkAlgorithm> Mesh;
   vtkSmartPointer<vtkActor> Actor;
   std::vector<vtkSmartPointer<vtkActor>> Surroundings; // the scene mesh's plane and axes
+  vtkSmartPointer<vtkActor> Inner; // the nested mesh's inner contour, glass of IOR 1.9
   vtkIdType Triangles = 0;
 };
+
+// Makes the scene's glass glass (IOR 1.5, the nested mesh's inner contour 1.9), or clears it.
+void SetGlass(const Scene& scene, bool glass)
+{
+  if (glass)
+  {
+    vtkRefractionPass::MakeGlass(scene.Actor, 1.5);
+    if (scene.Inner)
+    {
+      vtkRefractionPass::MakeGlass(scene.Inner, 1.9);
+    }
+    return;
+  }
+  vtkRefractionPass::ClearGlass(scene.Actor);
+  if (scene.Inner)
+  {
+    vtkRefractionPass::ClearGlass(scene.Inner);
+  }
+}
 
 // Puts the scene's actor (with its surroundings, if any) in the renderer with the
 // benchmark's camera framing the actor, at a size. The four meshes are alone over a black
@@ -1342,6 +1391,10 @@ void Show(vtkRenderWindow* window, vtkRenderer* renderer, vtkRefractionPass* pas
 {
   renderer->RemoveAllViewProps();
   renderer->AddActor(scene.Actor);
+  if (scene.Inner)
+  {
+    renderer->AddActor(scene.Inner);
+  }
   for (vtkActor* actor : scene.Surroundings)
   {
     renderer->AddActor(actor);
@@ -1486,6 +1539,17 @@ int main(int argc, char* argv[])
     {
       scene.Surroundings = MakeSurroundings();
     }
+    if (name == "nested")
+    {
+      auto inner = MakeMesh("nested-inner", options);
+      vtkNew<vtkPolyDataMapper> innerMapper;
+      innerMapper->SetInputConnection(inner->GetOutputPort());
+      innerMapper->ScalarVisibilityOff();
+      scene.Inner = vtkSmartPointer<vtkActor>::New();
+      scene.Inner->SetMapper(innerMapper);
+      vtkPolyData* innerPoly = vtkPolyData::SafeDownCast(inner->GetOutputDataObject(0));
+      scene.Triangles += innerPoly->GetNumberOfPolys() + innerPoly->GetNumberOfStrips();
+    }
     scenes.push_back(scene);
   }
   if (scenes.empty())
@@ -1514,7 +1578,7 @@ int main(int argc, char* argv[])
     {
       Show(window, renderer, pass, scene, size);
       renderer->SetPass(pass);
-      vtkRefractionPass::MakeGlass(scene.Actor, 1.5);
+      SetGlass(scene, true);
       window->Render();
       Truth truth;
       const std::string where = scene.Name + " " + std::to_string(size) + " ";
@@ -1579,7 +1643,7 @@ int main(int argc, char* argv[])
         }
         rows.push_back(row);
       }
-      vtkRefractionPass::ClearGlass(scene.Actor);
+      SetGlass(scene, false);
     }
   }
 
@@ -1610,15 +1674,15 @@ int main(int argc, char* argv[])
     renderer->SetPass(pass);
     if (row.Config.Method == "none")
     {
-      vtkRefractionPass::ClearGlass(scene.Actor); // the pass with nothing to do
+      SetGlass(scene, false); // the pass with nothing to do
     }
     else
     {
-      vtkRefractionPass::MakeGlass(scene.Actor, 1.5);
+      SetGlass(scene, true);
       Apply(pass, row.Config);
     }
     const Timing glass = TimeFrames(window, pass, options.Frames);
-    vtkRefractionPass::ClearGlass(scene.Actor);
+    SetGlass(scene, false);
     renderer->SetPass(nullptr);
     const Timing plain = TimeFrames(window, nullptr, options.Frames);
     Samples& s = samples[jobs[j].first];

@@ -338,12 +338,12 @@ static void test_single_sphere(void)
   printf("one ball, IOR 1.5:\n");
   c = compare(&s, 2, 0, 2);
   CHECK(c.failures == 0);
-  /* The error is the layers' texels (the normal is read at the nearest texel centre, about
-   * 1.9 degrees of the ball per texel here): at 96 px the median is 0.67 degrees, at 192 px
-   * 0.33. */
+  /* What is left is the layers' texels (the ball turns by 1.9 degrees per texel here): with
+   * the normal read at the nearest texel the median was 0.67 degrees; filtered over the four
+   * texels around the exit (rfk_peel_normal) it is 0.03. */
   CHECK(c.rays > 500);
-  CHECK(c.close >= 0.9 * c.rays);
-  CHECK(c.median < 1.0);
+  CHECK(c.close >= 0.99 * c.rays);
+  CHECK(c.median < 0.1);
   /* K beyond the layers the scene has changes nothing (deep peeling on a convex shape). */
   {
     const comparison deep = compare(&s, 8, 4, 2);
@@ -374,8 +374,8 @@ static void test_nested(void)
   CHECK(four.failures == 0);
   CHECK(four.rays > 100);
   /* Two layers cannot see the inner ball; four follow the ray through it. */
-  CHECK(four.close >= 0.75 * four.rays);
-  CHECK(four.median < 1.5);
+  CHECK(four.close >= 0.8 * four.rays);
+  CHECK(four.median < 0.3);
   CHECK(two.close < 0.05 * two.rays);
 }
 
@@ -398,8 +398,8 @@ static void test_overlapping(void)
   c = compare(&s, 4, 0, 4);
   CHECK(c.failures == 0);
   CHECK(c.rays > 100);
-  CHECK(c.close >= 0.65 * c.rays);
-  CHECK(c.median < 1.5);
+  CHECK(c.close >= 0.8 * c.rays);
+  CHECK(c.median < 0.5);
 }
 
 static void test_bad_input(void)

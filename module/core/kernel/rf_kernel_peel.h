@@ -179,6 +179,36 @@ RF_KERNEL int rfk_peel_next_crossing(rf_layer_stack layers, int count, rfk_camer
   return RF_PEEL_NONE;
 }
 
+/* The viewer-facing normal of layer `layer` at tc, filtered: the bilinear weights of the four
+ * texels around tc, over those holding the same surface as `centre` (the texel the crossing
+ * was found on: same facing, depth within `tolerance`). As DIR filters its back normals (the
+ * paper: filtering reduces noise), without blending across the layer's faults. */
+RF_KERNEL rf_float3 rfk_peel_normal(rf_layer_stack layers, rf_float2 tc, rf_float2 size,
+  int layer, rf_float4 centre, rf_float tolerance)
+{
+  rf_float px = tc.x * size.x - 0.5;
+  rf_float py = tc.y * size.y - 0.5;
+  rf_float fx = rf_floor(px);
+  rf_float fy = rf_floor(py);
+  rf_float ax = px - fx;
+  rf_float ay = py - fy;
+  rf_float3 sum = rf_make3(0.0, 0.0, 0.0);
+  for (int j = 0; j < 4; ++j)
+  {
+    rf_float ox = (j == 1 || j == 3) ? 1.0 : 0.0;
+    rf_float oy = j >= 2 ? 1.0 : 0.0;
+    rf_float2 at = rf_make2(rf_clamp((fx + ox + 0.5) / size.x, 0.0, 1.0),
+      rf_clamp((fy + oy + 0.5) / size.y, 0.0, 1.0));
+    rf_float4 t = rf_layer_texel(layers, at, size, layer);
+    rf_float w = (ox > 0.0 ? ax : 1.0 - ax) * (oy > 0.0 ? ay : 1.0 - ay);
+    if (t.z > 0.0 && rf_abs(t.z - centre.z) <= tolerance && (t.w < 0.0) == (centre.w < 0.0))
+    {
+      sum = rf_add3(sum, rf_scale3(rf_oct_decode(rf_make2(t.x, t.y)), w));
+    }
+  }
+  return rf_length3(sum) > 0.0 ? rf_normalize3(sum) : rf_oct_decode(rf_make2(centre.x, centre.y));
+}
+
 /* The innermost glass of a medium stack, -1 when the ray is outside every glass. */
 RF_KERNEL int rfk_peel_stack_top(int stack)
 {
@@ -234,7 +264,8 @@ RF_KERNEL int rfk_peel_trace(rf_layer_stack layers, int count, rf_material_table
       break;
     }
     rf_float4 texel = rf_layer_texel(layers, tc, camera.viewportSize, hitLayer);
-    rf_float3 towardViewer = rf_oct_decode(rf_make2(texel.x, texel.y));
+    rf_float3 towardViewer = rfk_peel_normal(layers, tc, camera.viewportSize, hitLayer, texel,
+      tEnd / RF_PEEL_MARCH_STEPS_REAL);
     rf_float3 outward = texel.w < 0.0 ? rf_neg3(towardViewer) : towardViewer;
     int crossed = rf_int_of(rf_abs(texel.w) + 0.5) - 1;
     if (rfk_peel_stack_top(stack) >= 0)

@@ -5,7 +5,8 @@
 // = 4 for the methods that tint (all but SSP) when the glass has a colour (it is light blue
 // here; white glass needs none); back capture RGBA32F normal and depth + DEPTH32F
 // = 20; ISR's d_N R32F = 4; SSP's scene copy RGBA8 = 4; DIR's
-// reduction chain RG32F = 8 per texel of each halved level; the debug output 2 x RGBA32F.
+// reduction chain RG32F = 8 per texel of each halved level; PEEL's K - 1 peeled layers RGBA32F
+// and their DEPTH32F = 16 (K - 1) + 4; the debug output 2 x RGBA32F.
 #include "vtkRefractionPass.h"
 
 #include "rfTestWindow.h"
@@ -64,6 +65,7 @@ int main()
     bool Debug;
     const char* Name;
     unsigned long long Expected;
+    int Layers; // PEEL's K (0: the default, 4)
   };
   const unsigned long long front = 24 * pixels;
   const unsigned long long frontUntinted = 20 * pixels;
@@ -79,6 +81,12 @@ int main()
       front + back + 4 * pixels },
     { vtkRefractionPass::SSP, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "SSP",
       frontUntinted + 4 * pixels },
+    { vtkRefractionPass::PEEL, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "PEEL (K = 4)",
+      front + 52 * pixels },
+    { vtkRefractionPass::PEEL, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "PEEL (K = 8)",
+      front + 116 * pixels, 8 },
+    { vtkRefractionPass::PEEL, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "PEEL (K = 2)",
+      front + 20 * pixels, 2 },
     { vtkRefractionPass::DIR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, true, "DIR, debug",
       front + back + reduction + 32 * pixels },
     // Back to the cheapest: what SIR no longer needs is released.
@@ -90,6 +98,7 @@ int main()
   {
     pass->SetDataColour(c.Expected != frontUntinted);
     pass->SetMethod(c.Method);
+    pass->SetPeelLayers(c.Layers > 0 ? c.Layers : 4);
     pass->SetDepthRangeMode(c.DepthRange);
     pass->SetDebugOutput(c.Debug);
     window->Render();

@@ -90,13 +90,33 @@ bool rfPeelMaterialSheet(int material)
   return rfMaterialSheet[clamp(material, 0, RF_MAX_MATERIALS - 1)] > 0.0;
 }
 
-// The trace from the front surface; returns the bounces (+ 16 when TIR ended it).
-int rfPeelTrace(vec3 P1, vec3 T1, int material, int channel, out vec3 P2, out vec3 T2,
-  out float insideLength)
+// The trace from the front surface: the ray's exit (P2, T2), the length it travelled inside,
+// and, with `split`, the ray the first refracting interface reflects (Fresnel) and its share,
+// followed to its own exit (branchP, branchT; branchWeight 0 when nothing split). Returns the
+// bounces (+ 16 when TIR ended the trace).
+int rfPeelTrace(vec3 P1, vec3 T1, int material, int channel, bool split, out vec3 P2,
+  out vec3 T2, out float insideLength, out vec3 branchP, out vec3 branchT, out float branchWeight)
 {
-  return rfk_peel_trace(0, RF_PEEL_LAYERS, channel, rfCamera(), P1, T1, material,
-    RF_PEEL_LAYERS - 1 + RF_PEEL_BOUNCES, RF_PEEL_BOUNCES, RF_TIR_POLICY, rfGlassExtent, P2, T2,
-    insideLength);
+  int interfaces = RF_PEEL_LAYERS - 1 + RF_PEEL_BOUNCES;
+  rfk_peel_ray ray = rfk_peel_entered(P1, T1, material);
+  rfk_peel_ray branch;
+  rfk_peel_follow(0, RF_PEEL_LAYERS, channel, rfCamera(), ray, interfaces, RF_PEEL_BOUNCES,
+    RF_TIR_POLICY, rfGlassExtent, split, branch, branchWeight);
+  P2 = ray.P;
+  T2 = ray.T;
+  insideLength = ray.travelled;
+  branchP = P2;
+  branchT = T2;
+  if (branchWeight > 0.0)
+  {
+    rfk_peel_ray unused;
+    float unusedWeight;
+    rfk_peel_follow(0, RF_PEEL_LAYERS, channel, rfCamera(), branch, interfaces, RF_PEEL_BOUNCES,
+      RF_TIR_POLICY, rfGlassExtent, false, unused, unusedWeight);
+    branchP = branch.P;
+    branchT = branch.T;
+  }
+  return ray.reflected + (ray.ended ? 16 : 0);
 }
 
 float rfFresnelWeight(float cosIncident, float etaIn)

@@ -233,6 +233,9 @@ rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, int channel)
   vec3 N2;
 #ifdef RF_METHOD_PEEL
   float insideLength = 0.0;
+  vec3 branchP = P;
+  vec3 branchT = T2;
+  float branchWeight = 0.0;
 #endif
   if (!tirIn && sheet > 0.0)
   {
@@ -245,8 +248,15 @@ rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, int channel)
   else if (!tirIn)
   {
     // Every interface the layers hold (rfMethodPEEL.glsl); TIR flag 1 where a reflection ended
-    // the trace, as the two-interface methods flag a TIR exit.
-    int bounces = rfPeelTrace(P, T1, material, channel, P2, T2, insideLength);
+    // the trace, as the two-interface methods flag a TIR exit. With Fresnel, the first exit
+    // also reflects its share back inside, followed to where it leaves.
+#if defined(RF_FRESNEL) && !defined(RF_DEBUG_OUTPUT)
+    bool split = true;
+#else
+    bool split = false;
+#endif
+    int bounces = rfPeelTrace(
+      P, T1, material, channel, split, P2, T2, insideLength, branchP, branchT, branchWeight);
     tir = bounces >= 16 ? 1 : 0;
   }
 #else
@@ -286,6 +296,12 @@ rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, int channel)
   float F = 0.0;
 #endif
   vec3 transmitted = rfTransmittedColour(tc, N1, T1, P2, T2);
+#ifdef RF_METHOD_PEEL
+  if (branchWeight > 0.0)
+  {
+    transmitted = mix(transmitted, rfBehind(branchP, branchT), branchWeight);
+  }
+#endif
 #ifdef RF_TINT
   // Beer-Lambert: the data's colour is what light keeps after rfAbsorptionDistance inside the
   // glass; along the measured path |P2 - P1| it keeps colour^(|P2 - P1| / distance). Where no

@@ -233,32 +233,54 @@ RF_KERNEL rf_float rfk_peel_medium_ior(rf_material_table materials, int stack)
   return top < 0 ? 1.0 : rf_material_ior(materials, top);
 }
 
-/* The ray after the front surface: entered at P1 (on layer 0) into glass `material`, unit
- * direction T1 inside. Followed through at most `interfaces` further crossings, of which at
- * most `bounces` may totally reflect (one more takes tirPolicy's direction and ends the trace),
- * each segment searched up to tLimit (the glass's extent) and the frustum. Writes where and in
- * which direction the ray leaves the captured glass, and the length it travelled inside;
- * returns the bounces followed, + 16 when TIR ended the trace. */
-RF_KERNEL int rfk_peel_trace(rf_layer_stack layers, int count, rf_material_table materials,
-  rfk_camera camera, rf_float3 P1, rf_float3 T1, int material, int interfaces, int bounces,
-  int tirPolicy, rf_float tLimit, RF_OUT(rf_float3) P2, RF_OUT(rf_float3) T2,
-  RF_OUT(rf_float) insideLength)
+/* A ray being followed through the layers: where it is, where it goes, the medium stack, its
+ * side of the layers, the total internal reflections it took, the length it travelled inside
+ * glass and whether a reflection past the bounces ended it. */
+RF_STRUCT_BEGIN(rfk_peel_ray)
+  rf_float3 P;
+  rf_float3 T;
+  int stack;
+  int side;
+  int reflected;
+  rf_float travelled;
+  rf_bool ended;
+};
+
+/* The ray just inside glass `material`, entered at P1 (on layer 0) with unit direction T1. */
+RF_KERNEL rfk_peel_ray rfk_peel_entered(rf_float3 P1, rf_float3 T1, int material)
 {
-  rf_float3 P = P1;
-  rf_float3 T = T1;
-  int stack = rfk_peel_stack_push(0, material);
-  int side = 1;
-  int reflected = 0;
-  int ended = 0;
-  rf_float travelled = 0.0;
+  rfk_peel_ray ray;
+  ray.P = P1;
+  ray.T = T1;
+  ray.stack = rfk_peel_stack_push(0, material);
+  ray.side = 1;
+  ray.reflected = 0;
+  ray.travelled = 0.0;
+  ray.ended = RF_FALSE;
+  return ray;
+}
+
+/* Follows the ray through at most `interfaces` crossings, of which at most `bounces` in all may
+ * totally reflect (one more takes tirPolicy's direction and ends it), each segment searched up
+ * to tLimit (the glass's extent) and the frustum. With `split`, the first interface that
+ * refracts also reflects (Fresnel): the reflected ray, ready to be followed, goes to `branch`
+ * and its share (the exact dielectric Fresnel term) to `branchWeight`, 0 when nothing split. */
+RF_KERNEL void rfk_peel_follow(rf_layer_stack layers, int count, rf_material_table materials,
+  rfk_camera camera, RF_INOUT(rfk_peel_ray) ray, int interfaces, int bounces, int tirPolicy,
+  rf_float tLimit, rf_bool split, RF_OUT(rfk_peel_ray) branch, RF_OUT(rf_float) branchWeight)
+{
+  rfk_peel_ray r = RF_DEREF(ray);
+  rf_bool splitting = split;
+  RF_DEREF(branch) = r;
+  RF_DEREF(branchWeight) = 0.0;
   for (int k = 0; k < interfaces; ++k)
   {
-    rf_float tEnd = rf_min(rfk_frustum_exit(camera, P, T), tLimit);
+    rf_float tEnd = rf_min(rfk_frustum_exit(camera, r.P, r.T), tLimit);
     rf_float3 Q;
     rf_float2 tc;
     int hitLayer;
-    int found = rfk_peel_next_crossing(layers, count, camera, P, T, side, tEnd,
-      rfk_peel_stack_top(stack) >= 0, RF_ADDR(Q), RF_ADDR(tc), RF_ADDR(hitLayer));
+    int found = rfk_peel_next_crossing(layers, count, camera, r.P, r.T, r.side, tEnd,
+      rfk_peel_stack_top(r.stack) >= 0, RF_ADDR(Q), RF_ADDR(tc), RF_ADDR(hitLayer));
     if (found == RF_PEEL_NONE)
     {
       break;
@@ -268,49 +290,77 @@ RF_KERNEL int rfk_peel_trace(rf_layer_stack layers, int count, rf_material_table
       tEnd / RF_PEEL_MARCH_STEPS_REAL);
     rf_float3 outward = texel.w < 0.0 ? rf_neg3(towardViewer) : towardViewer;
     int crossed = rf_int_of(rf_abs(texel.w) + 0.5) - 1;
-    if (rfk_peel_stack_top(stack) >= 0)
+    if (rfk_peel_stack_top(r.stack) >= 0)
     {
-      travelled = travelled + rf_length3(rf_sub3(Q, P));
+      r.travelled = r.travelled + rf_length3(rf_sub3(Q, r.P));
     }
-    P = Q;
+    r.P = Q;
     if (found == RF_PEEL_EDGE)
     {
       /* Left through the edge: the surface there faces the ray's way out. */
-      outward = rf_dot3(outward, T) < 0.0 ? rf_neg3(outward) : outward;
+      outward = rf_dot3(outward, r.T) < 0.0 ? rf_neg3(outward) : outward;
     }
-    rf_bool entering = rf_dot3(T, outward) < 0.0;
+    rf_bool entering = rf_dot3(r.T, outward) < 0.0;
     if (crossed >= 0 && rf_material_is_sheet(materials, crossed))
     {
       /* A thin sheet: crossed without bending (its two faces are parallel). */
-      side = rf_dot3(T, towardViewer) < 0.0 ? hitLayer + 1 : hitLayer;
+      r.side = rf_dot3(r.T, towardViewer) < 0.0 ? hitLayer + 1 : hitLayer;
       continue;
     }
-    int beyond = entering ? rfk_peel_stack_push(stack, crossed) : rfk_peel_stack_pop(stack);
-    rf_float eta = rfk_peel_medium_ior(materials, stack) / rfk_peel_medium_ior(materials, beyond);
+    int beyond = entering ? rfk_peel_stack_push(r.stack, crossed) : rfk_peel_stack_pop(r.stack);
+    rf_float eta =
+      rfk_peel_medium_ior(materials, r.stack) / rfk_peel_medium_ior(materials, beyond);
     rf_float3 next;
-    if (rfk_refract(T, outward, eta, RF_TIR_POLICY_REFLECT, RF_ADDR(next)) ==
+    if (rfk_refract(r.T, outward, eta, RF_TIR_POLICY_REFLECT, RF_ADDR(next)) ==
       RF_TOTAL_INTERNAL_REFLECTION)
     {
-      if (reflected >= bounces)
+      if (r.reflected >= bounces)
       {
-        rfk_refract(T, outward, eta, tirPolicy, RF_ADDR(next));
-        T = next;
-        ended = 16;
+        rfk_refract(r.T, outward, eta, tirPolicy, RF_ADDR(next));
+        r.T = next;
+        r.ended = RF_TRUE;
         break;
       }
-      reflected = reflected + 1;
+      r.reflected = r.reflected + 1;
     }
     else
     {
-      stack = beyond;
+      if (splitting && eta != 1.0)
+      {
+        /* The reflected part stays in this medium and turns back from the surface. */
+        rfk_peel_ray reflectedRay = r;
+        reflectedRay.T = rf_normalize3(rf_reflect3(r.T, outward));
+        reflectedRay.side = rf_dot3(reflectedRay.T, towardViewer) < 0.0 ? hitLayer + 1 : hitLayer;
+        RF_DEREF(branch) = reflectedRay;
+        RF_DEREF(branchWeight) = rfk_fresnel_dielectric(rf_dot3(r.T, outward), eta);
+        splitting = RF_FALSE;
+      }
+      r.stack = beyond;
     }
-    T = next;
-    side = rf_dot3(T, towardViewer) < 0.0 ? hitLayer + 1 : hitLayer;
+    r.T = next;
+    r.side = rf_dot3(r.T, towardViewer) < 0.0 ? hitLayer + 1 : hitLayer;
   }
-  RF_DEREF(P2) = P;
-  RF_DEREF(T2) = T;
-  RF_DEREF(insideLength) = travelled;
-  return reflected + ended;
+  RF_DEREF(ray) = r;
+}
+
+/* The ray after the front surface: entered at P1 (on layer 0) into glass `material`, unit
+ * direction T1 inside, followed as rfk_peel_follow without a split. Writes where and in which
+ * direction the ray leaves the captured glass, and the length it travelled inside; returns the
+ * bounces followed, + 16 when TIR ended the trace. */
+RF_KERNEL int rfk_peel_trace(rf_layer_stack layers, int count, rf_material_table materials,
+  rfk_camera camera, rf_float3 P1, rf_float3 T1, int material, int interfaces, int bounces,
+  int tirPolicy, rf_float tLimit, RF_OUT(rf_float3) P2, RF_OUT(rf_float3) T2,
+  RF_OUT(rf_float) insideLength)
+{
+  rfk_peel_ray ray = rfk_peel_entered(P1, T1, material);
+  rfk_peel_ray unused;
+  rf_float unusedWeight;
+  rfk_peel_follow(layers, count, materials, camera, RF_ADDR(ray), interfaces, bounces, tirPolicy,
+    tLimit, RF_FALSE, RF_ADDR(unused), RF_ADDR(unusedWeight));
+  RF_DEREF(P2) = ray.P;
+  RF_DEREF(T2) = ray.T;
+  RF_DEREF(insideLength) = ray.travelled;
+  return ray.reflected + (ray.ended ? 16 : 0);
 }
 
 #endif /* !RF_GLSL || RF_PEEL_LAYERS */

@@ -831,9 +831,9 @@ void ReportTiming(Scene& scene, vtkRenderWindow* window, const rfViewerSettings&
   scene.Text->SetVisibility(false);
   const vtkIdType triangles =
     vtkPolyData::SafeDownCast(scene.Surface->GetOutputDataObject(0))->GetNumberOfPolys();
-  double ms[4];
+  double ms[5];
   for (int method : { vtkRefractionPass::DIR, vtkRefractionPass::SIR, vtkRefractionPass::ISR,
-         vtkRefractionPass::SSP })
+         vtkRefractionPass::SSP, vtkRefractionPass::PEEL })
   {
     scene.Pass->SetMethod(method);
     ms[method] = MedianFrameMilliseconds(scene, window, s.Timing);
@@ -857,6 +857,8 @@ void ReportTiming(Scene& scene, vtkRenderWindow* window, const rfViewerSettings&
     scene.Distances->GetLastComputeSeconds() * 1e3);
   std::printf("  SSP             %8.2f ms  (%.2fx plain)\n", ms[vtkRefractionPass::SSP],
     ms[vtkRefractionPass::SSP] / plain);
+  std::printf("  PEEL (%d layers) %7.2f ms  (%.2fx plain)\n", s.Layers,
+    ms[vtkRefractionPass::PEEL], ms[vtkRefractionPass::PEEL] / plain);
   std::printf("  plain VTK       %8.2f ms\n", plain);
 }
 

@@ -240,7 +240,7 @@ int rfViewerParseOptions(int argc, char* argv[], const std::vector<std::string>&
     { "--zoom", "X", &o.Zoom, nullptr,
       "Camera zoom after fitting the scene, 0.1 to 10 (default 1.1)." },
     { "--timing", "N", &o.Timing, nullptr,
-      "Also time this many frames of DIR, SIR, ISR, SSP and of a plain VTK render of the same mesh, and print the medians (0: no timing)." },
+      "Also time this many frames of DIR, SIR, ISR, SSP, PEEL and of a plain VTK render of the same mesh, and print the medians (0: no timing)." },
     { "--no-text", nullptr, nullptr, &o.NoText,
       "No status line in the images." },
     { "--interactive", nullptr, nullptr, &o.Interactive,

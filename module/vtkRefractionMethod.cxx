@@ -60,6 +60,8 @@ void vtkRefractionMethod::AddTargets(std::vector<bool>& wanted, vtkRefractionPas
     wanted[vtkRefractionTargets::PEEL_1 + layer - 1] = true;
   }
   wanted[vtkRefractionTargets::PEEL_Z] = layers > 1;
+  wanted[vtkRefractionTargets::PEEL_DEPTHS_A] = layers > 1;
+  wanted[vtkRefractionTargets::PEEL_DEPTHS_B] = layers > 4;
 }
 
 //------------------------------------------------------------------------------

@@ -2,6 +2,7 @@
 
 #include "vtkObjectFactory.h"
 #include "vtkRefractionPass.h"
+#include "vtkShaderProgram.h"
 
 #include "rfShaders.h"
 
@@ -25,4 +26,16 @@ void vtkRefractionMethodPEEL::AppendDefines(std::ostream& defines, vtkRefraction
 std::string vtkRefractionMethodPEEL::GetShaderSource() const
 {
   return rfMethodPEELSource;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionMethodPEEL::SetUniforms(
+  vtkShaderProgram* program, vtkRefractionPass*, const double boundsDepthRange[2]) const
+{
+  if (program->IsUniformUsed("rfGlassDepthRange"))
+  {
+    const float range[2] = { static_cast<float>(boundsDepthRange[0]),
+      static_cast<float>(boundsDepthRange[1]) };
+    program->SetUniform2f("rfGlassDepthRange", range);
+  }
 }

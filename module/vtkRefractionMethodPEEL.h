@@ -23,6 +23,8 @@ public:
   int GetPeelLayers(vtkRefractionPass* settings) const override;
   void AppendDefines(std::ostream& defines, vtkRefractionPass* settings) const override;
   std::string GetShaderSource() const override;
+  void SetUniforms(vtkShaderProgram* program, vtkRefractionPass* settings,
+    const double boundsDepthRange[2]) const override;
 
 protected:
   vtkRefractionMethodPEEL() = default;

@@ -20,6 +20,7 @@
 #include "vtkRefractionDepthRange.h"
 #include "vtkRefractionGeometryStage.h"
 #include "vtkRefractionGlassChecker.h"
+#include "vtkRefractionLayerPack.h"
 #include "vtkRefractionMaterials.h"
 #include "vtkRefractionMethod.h"
 #include "vtkRefractionOpaqueStep.h"
@@ -555,12 +556,18 @@ void vtkRefractionPass::RenderGlass(
   this->NumberOfRenderedProps += this->GeometryStage->GetNumberOfDrawnProps();
   if (peelLayers > 1)
   {
+    vtkRefractionDepthRange::ComputeBounds(ren, glass, this->BoundsDepthRange);
     this->StartTimer(TIMED_BACK_CAPTURE);
     for (int layer = 1; layer < peelLayers; ++layer)
     {
       this->GeometryStage->DrawPeel(ren, this->Targets, layer);
     }
+    const bool packed = this->LayerPack->Pack(renWin, this->Targets, peelLayers);
     this->StopTimer(TIMED_BACK_CAPTURE);
+    if (!packed)
+    {
+      return;
+    }
   }
 
   this->StartTimer(TIMED_SHADE);
@@ -666,6 +673,7 @@ void vtkRefractionPass::ReleaseGraphicsResources(vtkWindow* w)
   }
   this->GeometryStage->ReleaseGraphicsResources(w);
   this->DepthRange->ReleaseGraphicsResources(w);
+  this->LayerPack->ReleaseGraphicsResources(w);
   this->ShadeStage->ReleaseGraphicsResources(w);
   this->Targets->ReleaseGraphicsResources(w);
   for (auto& timer : this->Timers)

@@ -47,6 +47,7 @@ class vtkProp;
 class vtkRefractionDepthRange;
 class vtkRefractionGeometryStage;
 class vtkRefractionGlassChecker;
+class vtkRefractionLayerPack;
 class vtkRefractionMaterials;
 class vtkRefractionMethod;
 class vtkRefractionOpaqueStep;
@@ -425,6 +426,7 @@ protected:
   vtkNew<vtkRefractionTargets> Targets;
   vtkNew<vtkRefractionGeometryStage> GeometryStage;
   vtkNew<vtkRefractionDepthRange> DepthRange;
+  vtkNew<vtkRefractionLayerPack> LayerPack;
   vtkNew<vtkRefractionShadeStage> ShadeStage;
   vtkNew<vtkRefractionMaterials> Materials;
   vtkSmartPointer<vtkRefractionMethod> MethodObject;

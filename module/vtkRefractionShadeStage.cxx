@@ -55,6 +55,8 @@ const TargetSampler kSamplers[] = {
   { vtkRefractionTargets::PEEL_5, "rfPeel5" },
   { vtkRefractionTargets::PEEL_6, "rfPeel6" },
   { vtkRefractionTargets::PEEL_7, "rfPeel7" },
+  { vtkRefractionTargets::PEEL_DEPTHS_A, "rfPeelDepthsA" },
+  { vtkRefractionTargets::PEEL_DEPTHS_B, "rfPeelDepthsB" },
 };
 }
 

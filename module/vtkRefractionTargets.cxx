@@ -43,6 +43,8 @@ const TargetFormat kFormats[vtkRefractionTargets::TARGET_COUNT] = {
   { "peeled layer 6", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "peeled layer 7", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "peel z-buffer", 0, 0, 0, vtkTextureObject::Nearest },
+  { "peeled depths 0-3", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
+  { "peeled depths 4-7", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "debug P2", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "debug T2", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
 };

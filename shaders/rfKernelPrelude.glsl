@@ -116,16 +116,19 @@
 
 // Depth-peeled layers and the materials (rf_kernel_peel.h): GLSL passes no array of samplers
 // or uniforms, so the kernel's handles are plain ints and the stage that defines RF_PEEL_LAYERS
-// provides the two lookups (shaders/rfMethodPEEL.glsl); the material table's handle is the
+// provides the lookups (shaders/rfMethodPEEL.glsl); the material table's handle is the
 // colour channel whose indices are read (dispersion).
 #ifdef RF_PEEL_LAYERS
 #define rf_layer_stack int
 #define rf_material_table int
 vec4 rfPeelLayerTexel(ivec2 texel, int layer);
+int rfPeelLayerSide(ivec2 texel, float depth);
 float rfPeelMaterialIOR(int material, int channel);
 bool rfPeelMaterialSheet(int material);
 #define rf_layer_texel(layers, tc, size, i) \
   rfPeelLayerTexel(ivec2(min((tc) * (size), (size) - 1.0)), i)
+#define rf_layer_side(layers, count, tc, size, depth) \
+  rfPeelLayerSide(ivec2(min((tc) * (size), (size) - 1.0)), depth)
 #define rf_material_ior(materials, m) rfPeelMaterialIOR(m, materials)
 #define rf_material_is_sheet(materials, m) rfPeelMaterialSheet(m)
 #endif

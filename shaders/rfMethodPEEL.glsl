@@ -2,7 +2,7 @@
 // glass (layer 0 is the front G-buffer, layers 1 .. K-1 the peeled ones), across every
 // interface they hold, nested and overlapping glass included: rfk_peel_trace of the kernel
 // (module/core/kernel/rf_kernel_peel.h, the same source the C core and its tests run). This
-// file provides the two lookups the kernel leaves to the stage (rfKernelPrelude.glsl).
+// file provides the lookups the kernel leaves to the stage (rfKernelPrelude.glsl).
 // Defines: RF_PEEL_LAYERS (K), RF_PEEL_BOUNCES (B, total internal reflections followed).
 #if RF_PEEL_LAYERS > 1
 uniform sampler2D rfPeel1;
@@ -25,8 +25,14 @@ uniform sampler2D rfPeel6;
 #if RF_PEEL_LAYERS > 7
 uniform sampler2D rfPeel7;
 #endif
-// The longest segment a ray is searched along: the diagonal of all the glass's bounds.
+uniform sampler2D rfPeelDepthsA;
+#if RF_PEEL_LAYERS > 4
+uniform sampler2D rfPeelDepthsB;
+#endif
+// The longest segment a ray is searched along: the diagonal of all the glass's bounds; and the
+// depths (positive, near to far) of those bounds: no layer lies outside them.
 uniform float rfGlassExtent;
+uniform vec2 rfGlassDepthRange;
 
 vec4 rfPeelLayerTexel(ivec2 texel, int layer)
 {
@@ -80,6 +86,19 @@ vec4 rfPeelLayerTexel(ivec2 texel, int layer)
   return vec4(0.0);
 }
 
+// How many layers at a texel hold a surface nearer than depth, from the depths packed four to
+// a texel (rfLayerPackFS.glsl; unused channels hold 0, which never counts).
+int rfPeelLayerSide(ivec2 texel, float depth)
+{
+  vec4 d = texelFetch(rfPeelDepthsA, texel, 0);
+  vec4 inFront = vec4(greaterThan(d, vec4(0.0))) * vec4(lessThan(d, vec4(depth)));
+#if RF_PEEL_LAYERS > 4
+  vec4 e = texelFetch(rfPeelDepthsB, texel, 0);
+  inFront += vec4(greaterThan(e, vec4(0.0))) * vec4(lessThan(e, vec4(depth)));
+#endif
+  return int(dot(inFront, vec4(1.0)) + 0.5);
+}
+
 float rfPeelMaterialIOR(int material, int channel)
 {
   return rfMaterialIndexOfRefraction(clamp(material, 0, RF_MAX_MATERIALS - 1), channel);
@@ -101,7 +120,7 @@ int rfPeelTrace(vec3 P1, vec3 T1, int material, int channel, bool split, out vec
   rfk_peel_ray ray = rfk_peel_entered(P1, T1, material);
   rfk_peel_ray branch;
   rfk_peel_follow(0, RF_PEEL_LAYERS, channel, rfCamera(), ray, interfaces, RF_PEEL_BOUNCES,
-    RF_TIR_POLICY, rfGlassExtent, split, branch, branchWeight);
+    RF_TIR_POLICY, rfGlassExtent, rfGlassDepthRange, split, branch, branchWeight);
   P2 = ray.P;
   T2 = ray.T;
   insideLength = ray.travelled;
@@ -111,8 +130,11 @@ int rfPeelTrace(vec3 P1, vec3 T1, int material, int channel, bool split, out vec
   {
     rfk_peel_ray unused;
     float unusedWeight;
-    rfk_peel_follow(0, RF_PEEL_LAYERS, channel, rfCamera(), branch, interfaces, RF_PEEL_BOUNCES,
-      RF_TIR_POLICY, rfGlassExtent, false, unused, unusedWeight);
+    // The reflected share is small but where TIR is near: its path is followed to the next
+    // exit and one interface beyond, not through all the layers.
+    rfk_peel_follow(0, RF_PEEL_LAYERS, channel, rfCamera(), branch, min(interfaces, 2),
+      RF_PEEL_BOUNCES, RF_TIR_POLICY, rfGlassExtent, rfGlassDepthRange, false, unused,
+      unusedWeight);
     branchP = branch.P;
     branchT = branch.T;
   }

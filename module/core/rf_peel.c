@@ -52,7 +52,9 @@ rf_status rf_peel_trace(const rf_peel_input* input, rf_layer_sampler sample, voi
     }
     projection.m[i] = input->projection[i];
   }
-  if (!rf_vec3_is_finite(input->P1) || !rf_vec3_is_finite(input->T1) || !isfinite(input->extent))
+  if (!rf_vec3_is_finite(input->P1) || !rf_vec3_is_finite(input->T1) ||
+    !isfinite(input->extent) || !isfinite(input->depth_range[0]) ||
+    !isfinite(input->depth_range[1]))
   {
     return RF_ERR_NOT_FINITE;
   }
@@ -70,7 +72,8 @@ rf_status rf_peel_trace(const rf_peel_input* input, rf_layer_sampler sample, voi
       return RF_ERR_IOR_NOT_POSITIVE;
     }
   }
-  if (input->viewport[0] < 1 || input->viewport[1] < 1 || !(input->extent > 0.0))
+  if (input->viewport[0] < 1 || input->viewport[1] < 1 || !(input->extent > 0.0) ||
+    !(input->depth_range[0] >= 0.0 && input->depth_range[0] <= input->depth_range[1]))
   {
     return RF_ERR_EMPTY_RANGE;
   }
@@ -91,7 +94,8 @@ rf_status rf_peel_trace(const rf_peel_input* input, rf_layer_sampler sample, voi
   flags = rfk_peel_trace(layers, input->layers, materials, camera, input->P1, direction,
     input->material, input->interfaces, input->bounces,
     input->tir_clamp ? RF_TIR_POLICY_CLAMP : RF_TIR_POLICY_REFLECT, input->extent,
-    RF_ADDR(P2), RF_ADDR(T2), RF_ADDR(inside));
+    rf_make2(input->depth_range[0], input->depth_range[1]), RF_ADDR(P2), RF_ADDR(T2),
+    RF_ADDR(inside));
   if (!rf_vec3_is_finite(P2) || !rf_vec3_is_finite(T2) || !isfinite(inside))
   {
     return RF_ERR_NOT_FINITE;

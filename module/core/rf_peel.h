@@ -34,6 +34,7 @@ typedef struct rf_peel_input
   int bounces;           /* total internal reflections followed, 0..RF_PEEL_BOUNCES_MAX */
   int tir_clamp;         /* non-zero: past the bounces TIR clamps (the paper), else reflects */
   double extent;         /* longest segment searched (the glass's diagonal), > 0 */
+  double depth_range[2]; /* the glass's depths (positive, near to far): nothing beyond */
   double projection[16]; /* view to clip, ROW-MAJOR */
   int viewport[2];       /* the layers' size in texels */
   int parallel;          /* non-zero: a parallel projection */
@@ -55,7 +56,7 @@ typedef struct rf_peel_result
  * Errors: RF_ERR_NULL_ARGUMENT; RF_ERR_NOT_FINITE; RF_ERR_DEGENERATE_DIRECTION (T1 zero);
  * RF_ERR_STEPS_OUT_OF_RANGE (layers, interfaces or bounces outside their ranges, or the
  * material outside the table); RF_ERR_IOR_NOT_POSITIVE; RF_ERR_EMPTY_RANGE (a viewport below
- * 1x1, or extent <= 0). On error *result is left unchanged. */
+ * 1x1, extent <= 0, or a depth range that is not 0 <= near <= far). On error *result is left unchanged. */
 rf_status rf_peel_trace(const rf_peel_input* input, rf_layer_sampler sample, void* context,
   rf_peel_result* result);
 

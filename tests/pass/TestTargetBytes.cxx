@@ -6,7 +6,8 @@
 // here; white glass needs none); back capture RGBA32F normal and depth + DEPTH32F
 // = 20; ISR's d_N R32F = 4; SSP's scene copy RGBA8 = 4; DIR's
 // reduction chain RG32F = 8 per texel of each halved level; PEEL's K - 1 peeled layers RGBA32F
-// and their DEPTH32F = 16 (K - 1) + 4; the debug output 2 x RGBA32F.
+// and their DEPTH32F = 16 (K - 1) + 4, and the layers' depths packed into RGBA32F, one for
+// K <= 4, two above; the debug output 2 x RGBA32F.
 #include "vtkRefractionPass.h"
 
 #include "rfTestWindow.h"
@@ -82,11 +83,11 @@ int main()
     { vtkRefractionPass::SSP, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "SSP",
       frontUntinted + 4 * pixels },
     { vtkRefractionPass::PEEL, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "PEEL (K = 4)",
-      front + 52 * pixels },
+      front + 68 * pixels },
     { vtkRefractionPass::PEEL, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "PEEL (K = 8)",
-      front + 116 * pixels, 8 },
+      front + 148 * pixels, 8 },
     { vtkRefractionPass::PEEL, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "PEEL (K = 2)",
-      front + 20 * pixels, 2 },
+      front + 36 * pixels, 2 },
     { vtkRefractionPass::DIR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, true, "DIR, debug",
       front + back + reduction + 32 * pixels },
     // Back to the cheapest: what SIR no longer needs is released.

@@ -294,6 +294,8 @@ static comparison compare(const scene* s, int layers, int bounces, int minimum_h
       input.bounces = bounces;
       input.tir_clamp = 0;
       input.extent = 8.0;
+      input.depth_range[0] = 4.0; /* the spheres lie within depths 4.8 .. 8.8 */
+      input.depth_range[1] = 9.5;
       for (k = 0; k < 16; ++k)
       {
         input.projection[k] = s->projection[k];
@@ -420,6 +422,8 @@ static void test_bad_input(void)
   input.bounces = 0;
   input.tir_clamp = 1;
   input.extent = 2.0;
+  input.depth_range[0] = 4.0;
+  input.depth_range[1] = 6.0;
   for (k = 0; k < 16; ++k)
   {
     input.projection[k] = s.projection[k];
@@ -451,6 +455,12 @@ static void test_bad_input(void)
   input.ior = ior;
   input.extent = 0.0;
   CHECK(rf_peel_trace(&input, sample_layers, &s, &result) == RF_ERR_EMPTY_RANGE);
+  input.extent = 2.0;
+  input.depth_range[0] = 7.0;
+  CHECK(rf_peel_trace(&input, sample_layers, &s, &result) == RF_ERR_EMPTY_RANGE);
+  input.depth_range[0] = 4.0;
+  input.depth_range[1] = INFINITY;
+  CHECK(rf_peel_trace(&input, sample_layers, &s, &result) == RF_ERR_NOT_FINITE);
 }
 
 int main(void)

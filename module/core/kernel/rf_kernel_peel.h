@@ -35,10 +35,14 @@
 #if !defined(RF_GLSL) || defined(RF_PEEL_LAYERS)
 
 #define RF_PEEL_MAX_LAYERS 8
-/* Linear search steps per segment (the paper settles on 50 over the depth range, section 4.4;
- * here the segment is at most the glass's diagonal) and bisections of a crossing. */
-#define RF_PEEL_MARCH_STEPS 32
-#define RF_PEEL_MARCH_STEPS_REAL 32.0
+/* Most linear search steps per segment (the paper settles on 50 over the depth range, section
+ * 4.4; here the segment is at most the glass's diagonal and within its depth range, and the
+ * steps follow its length on screen) and bisections of a crossing. On the bunny at 512 px
+ * (llvmpipe) 16 steps took 213 ms a frame against 299 ms for 32, and the layers tests read
+ * within 0.2 dB of 32 steps. */
+#define RF_PEEL_MARCH_STEPS 16
+#define RF_PEEL_MARCH_STEPS_REAL 16.0
+#define RF_PEEL_MIN_STEPS_REAL 4.0
 #define RF_PEEL_BISECTIONS 6
 /* Glass a ray can be inside at once: materials + 1 in 7-bit fields of an int, innermost low. */
 #define RF_PEEL_STACK_DEPTH 4
@@ -62,20 +66,13 @@ RF_KERNEL rf_bool rfk_peel_on_image(rfk_camera camera, rf_float3 P, RF_OUT(rf_fl
   return t.x >= 0.0 && t.y >= 0.0 && t.x <= 1.0 && t.y <= 1.0;
 }
 
-/* How many of the first `count` layers at tc lie in front of depth (nearer the eye). */
+/* How many of the first `count` layers at tc lie in front of depth (nearer the eye):
+ * rf_layer_side, which the including side provides (the GLSL stage reads each layer's texture
+ * once, by name, instead of through rf_layer_texel's run-time index). */
 RF_KERNEL int rfk_peel_side(rf_layer_stack layers, int count, rf_float2 tc, rf_float2 size,
   rf_float depth)
 {
-  int side = 0;
-  for (int i = 0; i < count; ++i)
-  {
-    rf_float stored = rf_layer_texel(layers, tc, size, i).z;
-    if (stored > 0.0 && stored < depth)
-    {
-      side = side + 1;
-    }
-  }
-  return side;
+  return rf_layer_side(layers, count, tc, size, depth);
 }
 
 /* The side of the ray point P + t T (-1 off the image). */
@@ -92,13 +89,18 @@ RF_KERNEL int rfk_peel_side_at(rf_layer_stack layers, int count, rfk_camera came
 }
 
 /* The next crossing of the ray P + t T, 0 < t <= tEnd, with the layers, starting on side
- * `side` (how many layers lie in front of the ray just after P). Writes the crossing point,
+ * `side` (how many layers lie in front of the ray just after P). faultSize is the paper's SIZE,
+ * the depth change across a final bracket below which a crossing is a surface (the fault
+ * test), and the largest mismatch between the ray and the crossed layer. A crossing of
+ * leftLayer (the layer P lies on) within a texel of P is the layer's texel-wise depth seen
+ * from beside it, not a surface: the ray goes on. Writes the crossing point,
  * its texture coordinates and the crossed layer's index there; returns RF_PEEL_SURFACE, or
  * RF_PEEL_EDGE where a ray `inside` the glass passes onto texels with no glass at all (the
  * surface it left through is too steep for the layers to hold: the layer at the last texel
  * on the glass nearest the ray stands in), or RF_PEEL_NONE. */
 RF_KERNEL int rfk_peel_next_crossing(rf_layer_stack layers, int count, rfk_camera camera,
-  rf_float3 P, rf_float3 T, int side, rf_float tEnd, rf_bool inside, RF_OUT(rf_float3) hit,
+  rf_float3 P, rf_float3 T, int side, int leftLayer, rf_float tEnd, rf_float faultSize,
+  rf_bool inside, RF_OUT(rf_float3) hit,
   RF_OUT(rf_float2) hitTC, RF_OUT(int) hitLayer)
 {
   RF_DEREF(hit) = P;
@@ -108,9 +110,18 @@ RF_KERNEL int rfk_peel_next_crossing(rf_layer_stack layers, int count, rfk_camer
   {
     return RF_PEEL_NONE;
   }
-  rf_float dt = tEnd / RF_PEEL_MARCH_STEPS_REAL;
+  /* About one step per texel the segment crosses on screen (the layers hold one value per
+   * texel; a ray along the line of sight crosses its layers within one texel, which the count
+   * of layers in front tells at once), at least RF_PEEL_MIN_STEPS, at most
+   * RF_PEEL_MARCH_STEPS. */
+  rf_float2 start = rfk_project_to_texture(camera, P);
+  rf_float2 end = rfk_project_to_texture(camera, rf_add3(P, rf_scale3(T, tEnd)));
+  rf_float texels = rf_length2(rf_mul2(rf_sub2(end, start), camera.viewportSize));
+  int steps = rf_int_of(
+    rf_clamp(rf_ceil(texels), RF_PEEL_MIN_STEPS_REAL, RF_PEEL_MARCH_STEPS_REAL));
+  rf_float dt = tEnd / rf_float_of(steps);
   int before = side;
-  for (int i = 1; i <= RF_PEEL_MARCH_STEPS; ++i)
+  for (int i = 1; i <= steps; ++i)
   {
     rf_float t = dt * rf_float_of(i);
     int now = rfk_peel_side_at(layers, count, camera, P, T, t);
@@ -140,32 +151,36 @@ RF_KERNEL int rfk_peel_next_crossing(rf_layer_stack layers, int count, rfk_camer
       rf_float2 farTC;
       rfk_peel_on_image(camera, nearQ, RF_ADDR(nearTC));
       rfk_peel_on_image(camera, farQ, RF_ADDR(farTC));
-      rf_float2 size = camera.viewportSize;
-      int farSide = rfk_peel_side(layers, count, farTC, size, -farQ.z);
+      rf_float2 pixels = camera.viewportSize;
+      int farSide = rfk_peel_side(layers, count, farTC, pixels, -farQ.z);
       /* Going deeper the ray passed behind layer farSide - 1; coming forward it passed in
        * front of layer farSide. */
       int crossedLayer = farSide > before ? farSide - 1 : farSide;
-      rf_float farDepth = rf_layer_texel(layers, farTC, size, crossedLayer).z;
-      rf_float nearDepth = rf_layer_texel(layers, nearTC, size, crossedLayer).z;
+      rf_float farDepth = rf_layer_texel(layers, farTC, pixels, crossedLayer).z;
+      rf_float nearDepth = rf_layer_texel(layers, nearTC, pixels, crossedLayer).z;
       /* The paper's fault test: across the final bracket the crossed layer's depth changes by
        * X; on a surface X shrinks with the bracket, at a fault it stays the jump. */
       rf_float X = rf_abs(farDepth - nearDepth);
-      if (farDepth > 0.0 && nearDepth > 0.0 && X <= dt &&
-        rf_abs(-farQ.z - farDepth) <= dt)
+      rf_float2 moved = rf_mul2(rf_sub2(farTC, start), camera.viewportSize);
+      rf_bool beside =
+        crossedLayer == leftLayer && rf_abs(moved.x) <= 1.0 && rf_abs(moved.y) <= 1.0;
+      if (farDepth > 0.0 && nearDepth > 0.0 && X <= faultSize &&
+        rf_abs(-farQ.z - farDepth) <= faultSize && !beside)
       {
         RF_DEREF(hit) = farQ;
         RF_DEREF(hitTC) = farTC;
         RF_DEREF(hitLayer) = crossedLayer;
         return RF_PEEL_SURFACE;
       }
-      if (inside && !(rf_layer_texel(layers, farTC, size, 0).z > 0.0))
+      if (inside && !(rf_layer_texel(layers, farTC, pixels, 0).z > 0.0))
       {
         /* Off the glass's footprint from inside: through the layer nearest the ray at the
          * last texel on the glass (before - 1 in front of it, before behind it). */
         rf_float depth = -nearQ.z;
         int front = before > 0 ? before - 1 : 0;
-        rf_float frontDepth = rf_layer_texel(layers, nearTC, size, front).z;
-        rf_float backDepth = before < count ? rf_layer_texel(layers, nearTC, size, before).z : 0.0;
+        rf_float frontDepth = rf_layer_texel(layers, nearTC, pixels, front).z;
+        rf_float backDepth =
+          before < count ? rf_layer_texel(layers, nearTC, pixels, before).z : 0.0;
         rf_bool useBack = backDepth > 0.0 && (before == 0 || backDepth - depth < depth - frontDepth);
         RF_DEREF(hit) = rf_scale3(rf_add3(nearQ, farQ), 0.5);
         RF_DEREF(hitTC) = nearTC;
@@ -209,6 +224,22 @@ RF_KERNEL rf_float3 rfk_peel_normal(rf_layer_stack layers, rf_float2 tc, rf_floa
   return rf_length3(sum) > 0.0 ? rf_normalize3(sum) : rf_oct_decode(rf_make2(centre.x, centre.y));
 }
 
+/* The largest t for which the ray P + t T stays within the glass's depth range (positive
+ * depths): no layer lies outside it, so no segment needs to be searched beyond. */
+RF_KERNEL rf_float rfk_peel_slab_exit(rf_float3 P, rf_float3 T, rf_float2 depthRange)
+{
+  rf_float depth = -P.z;
+  if (T.z < 0.0)
+  {
+    return rf_max((depthRange.y - depth) / -T.z, 0.0);
+  }
+  if (T.z > 0.0)
+  {
+    return rf_max((depth - depthRange.x) / T.z, 0.0);
+  }
+  return 1e30;
+}
+
 /* The innermost glass of a medium stack, -1 when the ray is outside every glass. */
 RF_KERNEL int rfk_peel_stack_top(int stack)
 {
@@ -241,6 +272,7 @@ RF_STRUCT_BEGIN(rfk_peel_ray)
   rf_float3 T;
   int stack;
   int side;
+  int layer; /* the layer P lies on */
   int reflected;
   rf_float travelled;
   rf_bool ended;
@@ -254,6 +286,7 @@ RF_KERNEL rfk_peel_ray rfk_peel_entered(rf_float3 P1, rf_float3 T1, int material
   ray.T = T1;
   ray.stack = rfk_peel_stack_push(0, material);
   ray.side = 1;
+  ray.layer = 0;
   ray.reflected = 0;
   ray.travelled = 0.0;
   ray.ended = RF_FALSE;
@@ -262,32 +295,36 @@ RF_KERNEL rfk_peel_ray rfk_peel_entered(rf_float3 P1, rf_float3 T1, int material
 
 /* Follows the ray through at most `interfaces` crossings, of which at most `bounces` in all may
  * totally reflect (one more takes tirPolicy's direction and ends it), each segment searched up
- * to tLimit (the glass's extent) and the frustum. With `split`, the first interface that
+ * to tLimit (the glass's extent), the glass's depth range and the frustum. With `split`, the first interface that
  * refracts also reflects (Fresnel): the reflected ray, ready to be followed, goes to `branch`
  * and its share (the exact dielectric Fresnel term) to `branchWeight`, 0 when nothing split. */
 RF_KERNEL void rfk_peel_follow(rf_layer_stack layers, int count, rf_material_table materials,
   rfk_camera camera, RF_INOUT(rfk_peel_ray) ray, int interfaces, int bounces, int tirPolicy,
-  rf_float tLimit, rf_bool split, RF_OUT(rfk_peel_ray) branch, RF_OUT(rf_float) branchWeight)
+  rf_float tLimit, rf_float2 depthRange, rf_bool split, RF_OUT(rfk_peel_ray) branch,
+  RF_OUT(rf_float) branchWeight)
 {
   rfk_peel_ray r = RF_DEREF(ray);
   rf_bool splitting = split;
+  /* SIZE: a linear step over the glass's extent. */
+  rf_float faultSize = tLimit / RF_PEEL_MARCH_STEPS_REAL;
   RF_DEREF(branch) = r;
   RF_DEREF(branchWeight) = 0.0;
   for (int k = 0; k < interfaces; ++k)
   {
-    rf_float tEnd = rf_min(rfk_frustum_exit(camera, r.P, r.T), tLimit);
+    rf_float tEnd = rf_min(rf_min(rfk_frustum_exit(camera, r.P, r.T), tLimit),
+      rfk_peel_slab_exit(r.P, r.T, depthRange));
     rf_float3 Q;
     rf_float2 tc;
     int hitLayer;
-    int found = rfk_peel_next_crossing(layers, count, camera, r.P, r.T, r.side, tEnd,
-      rfk_peel_stack_top(r.stack) >= 0, RF_ADDR(Q), RF_ADDR(tc), RF_ADDR(hitLayer));
+    int found = rfk_peel_next_crossing(layers, count, camera, r.P, r.T, r.side, r.layer, tEnd,
+      faultSize, rfk_peel_stack_top(r.stack) >= 0, RF_ADDR(Q), RF_ADDR(tc), RF_ADDR(hitLayer));
     if (found == RF_PEEL_NONE)
     {
       break;
     }
     rf_float4 texel = rf_layer_texel(layers, tc, camera.viewportSize, hitLayer);
-    rf_float3 towardViewer = rfk_peel_normal(layers, tc, camera.viewportSize, hitLayer, texel,
-      tEnd / RF_PEEL_MARCH_STEPS_REAL);
+    rf_float3 towardViewer =
+      rfk_peel_normal(layers, tc, camera.viewportSize, hitLayer, texel, faultSize);
     rf_float3 outward = texel.w < 0.0 ? rf_neg3(towardViewer) : towardViewer;
     int crossed = rf_int_of(rf_abs(texel.w) + 0.5) - 1;
     if (rfk_peel_stack_top(r.stack) >= 0)
@@ -295,6 +332,7 @@ RF_KERNEL void rfk_peel_follow(rf_layer_stack layers, int count, rf_material_tab
       r.travelled = r.travelled + rf_length3(rf_sub3(Q, r.P));
     }
     r.P = Q;
+    r.layer = hitLayer;
     if (found == RF_PEEL_EDGE)
     {
       /* Left through the edge: the surface there faces the ray's way out. */
@@ -349,14 +387,14 @@ RF_KERNEL void rfk_peel_follow(rf_layer_stack layers, int count, rf_material_tab
  * bounces followed, + 16 when TIR ended the trace. */
 RF_KERNEL int rfk_peel_trace(rf_layer_stack layers, int count, rf_material_table materials,
   rfk_camera camera, rf_float3 P1, rf_float3 T1, int material, int interfaces, int bounces,
-  int tirPolicy, rf_float tLimit, RF_OUT(rf_float3) P2, RF_OUT(rf_float3) T2,
-  RF_OUT(rf_float) insideLength)
+  int tirPolicy, rf_float tLimit, rf_float2 depthRange, RF_OUT(rf_float3) P2,
+  RF_OUT(rf_float3) T2, RF_OUT(rf_float) insideLength)
 {
   rfk_peel_ray ray = rfk_peel_entered(P1, T1, material);
   rfk_peel_ray unused;
   rf_float unusedWeight;
   rfk_peel_follow(layers, count, materials, camera, RF_ADDR(ray), interfaces, bounces, tirPolicy,
-    tLimit, RF_FALSE, RF_ADDR(unused), RF_ADDR(unusedWeight));
+    tLimit, depthRange, RF_FALSE, RF_ADDR(unused), RF_ADDR(unusedWeight));
   RF_DEREF(P2) = ray.P;
   RF_DEREF(T2) = ray.T;
   RF_DEREF(insideLength) = ray.travelled;

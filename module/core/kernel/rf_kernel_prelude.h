@@ -184,6 +184,20 @@ static inline rf_float4 rf_layer_texel(rf_layer_stack layers, rf_float2 tc, rf_f
   return layers.texel(layers.context, at, i);
 }
 
+/* How many of the first `count` layers at tc hold a surface nearer than depth. */
+static inline int rf_layer_side(rf_layer_stack layers, int count, rf_float2 tc, rf_float2 size,
+  double depth)
+{
+  int side = 0;
+  int i;
+  for (i = 0; i < count; ++i)
+  {
+    const double stored = rf_layer_texel(layers, tc, size, i).z;
+    side += stored > 0.0 && stored < depth ? 1 : 0;
+  }
+  return side;
+}
+
 /* The glass materials by index: their index of refraction, and whether each is a thin sheet. */
 typedef struct rf_material_table
 {

@@ -1,0 +1,125 @@
+#include "vtkRefractionLayerPack.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkRefractionTargets.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include "rfShaders.h"
+#include "vtk_glew.h"
+
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkRefractionLayerPack);
+
+//------------------------------------------------------------------------------
+vtkRefractionLayerPack::vtkRefractionLayerPack() = default;
+vtkRefractionLayerPack::~vtkRefractionLayerPack() = default;
+
+//------------------------------------------------------------------------------
+void vtkRefractionLayerPack::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Packing shader: " << (this->Quad ? "built" : "not built") << " for "
+     << this->QuadLayers << " layers\n";
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionLayerPack::Pack(
+  vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int layers)
+{
+  if (layers < 2 || layers > 8)
+  {
+    return false;
+  }
+  if (!this->Quad || this->QuadLayers != layers)
+  {
+    if (this->Quad)
+    {
+      this->Quad->ReleaseGraphicsResources(renWin);
+    }
+    std::string source = rfLayerPackFSSource;
+    vtkShaderProgram::Substitute(source, "in vec2 texCoord;",
+      "in vec2 texCoord;\n#define RF_PEEL_LAYERS " + std::to_string(layers) + "\n");
+    this->Quad.reset(new vtkOpenGLQuadHelper(renWin,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str(), ""));
+    this->QuadLayers = layers;
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
+  }
+  vtkShaderProgram* program = this->Quad->Program;
+  if (!program || !program->GetCompiled())
+  {
+    vtkErrorMacro("Could not build the layer packing shader; the glass is not refracted.");
+    this->Quad.reset();
+    return false;
+  }
+  std::vector<vtkTextureObject*> sources;
+  for (int layer = 0; layer < layers; ++layer)
+  {
+    vtkTextureObject* texture = targets->Get(
+      layer == 0 ? vtkRefractionTargets::FRONT_SURFACE : vtkRefractionTargets::PEEL_1 + layer - 1);
+    texture->Activate();
+    program->SetUniformi(("rfLayer" + std::to_string(layer)).c_str(), texture->GetTextureUnit());
+    sources.push_back(texture);
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
+  vtkTextureObject* packed = targets->Get(vtkRefractionTargets::PEEL_DEPTHS_A);
+  const int buffers = layers > 4 ? 2 : 1;
+  fbo->SaveCurrentBindingsAndBuffers();
+  fbo->Bind();
+  fbo->AddColorAttachment(0, packed);
+  if (buffers == 2)
+  {
+    fbo->AddColorAttachment(1, targets->Get(vtkRefractionTargets::PEEL_DEPTHS_B));
+  }
+  fbo->RemoveDepthAttachment();
+  fbo->ActivateDrawBuffers(buffers);
+  {
+    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+    const int width = static_cast<int>(packed->GetWidth());
+    const int height = static_cast<int>(packed->GetHeight());
+    ostate->vtkglViewport(0, 0, width, height);
+    ostate->vtkglScissor(0, 0, width, height);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglDisable(GL_DEPTH_TEST);
+    this->Quad->Render();
+  }
+  if (buffers == 2)
+  {
+    fbo->RemoveColorAttachment(1);
+  }
+  fbo->UnBind();
+  fbo->RestorePreviousBindingsAndBuffers();
+  for (vtkTextureObject* texture : sources)
+  {
+    texture->Deactivate();
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionLayerPack::ReleaseGraphicsResources(vtkWindow* w)
+{
+  if (this->Quad)
+  {
+    this->Quad->ReleaseGraphicsResources(w);
+    this->Quad.reset();
+  }
+  this->QuadLayers = 0;
+}

@@ -24,7 +24,8 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// The pass's method: vtkRefractionPass::SIR (0), DIR (1, default), ISR (2), SSP (3).
+  /// The pass's method: vtkRefractionPass::SIR (0), DIR (1, default), ISR (2), SSP (3),
+  /// PEEL (4).
   void SetGlassMethod(int method);
   int GetGlassMethod();
   ///@}

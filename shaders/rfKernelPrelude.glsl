@@ -41,6 +41,12 @@
 //   vec2  rfk_project_to_texture(rfk_camera camera, vec3 p)   view space to [0,1]^2
 //   float rfk_dir_alpha(float k1, float k2, float z)           eq. 9       (rf_dir_alpha)
 //   float rfk_frustum_exit(rfk_camera camera, vec3 P, vec3 T)  the ray's exit from the frustum
+//   int   rfk_peel_trace(...) / void rfk_peel_follow(...)   PEEL's ray through K depth-peeled
+//         layers, every interface, a medium stack, TIR followed (rf_kernel_peel.h; needs
+//         RF_PEEL_LAYERS and the stage's lookups, below)                    (rf_peel_trace)
+//   float rfk_sh_basis(int l, int m, vec3 d)   real spherical harmonic Y_l^m    (rf_sh_basis)
+//   float rfk_sh_evaluate(table, base, order, d)   a sum over the basis (needs RF_SH_TABLE and
+//         rf_sh_coefficient from the stage)                                   (rf_sh_evaluate)
 // Smaller pieces (rfk_dir_make_segment, rfk_dir_cbs, rfk_dir_secant, rfk_stored_depth, ...)
 // are there for stages that need only part of the search; see rf_kernel_dir.h.
 #define RF_GLSL 1

@@ -70,7 +70,7 @@ int rft_make_scene(int width, int height, float* depth, rft_scene* scene)
 #if RFT_TEST_REFRACT_REFLECT != RFT_CASE_REFRACT_REFLECT ||                                      \
   RFT_TEST_REFRACT_CLAMP != RFT_CASE_REFRACT_CLAMP ||                                              \
   RFT_TEST_SEARCH_FIRST != RFT_CASE_SEARCH_PAPER ||                                                \
-  RFT_CASE_SEARCH_TOWARD_CAMERA != RFT_CASE_COUNT - 1
+  RFT_CASE_SH_BASIS != RFT_CASE_COUNT - 1
 #error "kernel_glsl_reference.h and rf_kernel_cases.h number the cases differently"
 #endif
 
@@ -87,7 +87,8 @@ const char* rft_case_name(int test_case)
     "frustum exit and projection", "SSP (Fresnel, perturbed position)",
     "DIR search, paper (5 steps)",
     "DIR search, defaults (8 adaptive + secant)",
-    "DIR search, IOR 3 (5 steps + secant)", "DIR search, toward the camera" };
+    "DIR search, IOR 3 (5 steps + secant)", "DIR search, toward the camera",
+    "spherical harmonics (orders 8, 5, 2)" };
   return test_case >= 0 && test_case < RFT_CASE_COUNT ? names[test_case] : "unknown";
 }
 

@@ -12,6 +12,7 @@
 #include "rf_kernel_isr.h"
 #include "rf_kernel_octahedral.h"
 #include "rf_kernel_optics.h"
+#include "rf_kernel_sh.h"
 #include "rf_kernel_ssp.h"
 #endif
 
@@ -29,7 +30,8 @@
 #define RFT_CASE_SEARCH_DEFAULTS 11
 #define RFT_CASE_SEARCH_STRONG 12
 #define RFT_CASE_SEARCH_TOWARD_CAMERA 13
-#define RFT_CASE_COUNT 14
+#define RFT_CASE_SH_BASIS 14
+#define RFT_CASE_COUNT 15
 
 /* The glass sphere of the search cases, in view space. */
 #define RFT_SPHERE_Z -5.0
@@ -208,6 +210,12 @@ RF_KERNEL rf_float4 rft_evaluate(int testCase, rf_float2 pixel, rf_float2 size, 
   {
     return rft_search(pixel, size, focal, camera, depthRange, depthMap,
       rfk_make_search_settings(5, RF_FALSE, RF_TRUE), 1.0, RF_TRUE);
+  }
+  if (testCase == RFT_CASE_SH_BASIS)
+  {
+    rf_float3 d = rft_sphere_direction(pixel, size);
+    return rf_make4(rfk_sh_basis(8, -5, d), rfk_sh_basis(8, 3, d), rfk_sh_basis(5, 0, d),
+      rfk_sh_basis(2, -1, d));
   }
   if (testCase == RFT_CASE_FRUSTUM_EXIT)
   {

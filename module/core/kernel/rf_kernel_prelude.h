@@ -198,6 +198,17 @@ static inline int rf_layer_side(rf_layer_stack layers, int count, rf_float2 tc, 
   return side;
 }
 
+/* Spherical-harmonic coefficients (rf_kernel_sh.h), read by index. */
+typedef struct rf_sh_table
+{
+  const double* values;
+} rf_sh_table;
+
+static inline double rf_sh_coefficient(rf_sh_table table, int i)
+{
+  return table.values[i];
+}
+
 /* The glass materials by index: their index of refraction, and whether each is a thin sheet. */
 typedef struct rf_material_table
 {

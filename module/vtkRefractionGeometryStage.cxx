@@ -62,7 +62,7 @@ void vtkRefractionGeometryStage::Render(const vtkRenderState*)
 
 //------------------------------------------------------------------------------
 void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
-  bool normalDistance, bool dataColour, bool backNearest, bool peel,
+  bool normalDistance, bool dataColour, bool backNearest, bool peel, bool shTransfer,
   vtkMatrix4x4* inverseProjection, bool parallel)
 {
   this->Glass = glass;
@@ -95,6 +95,15 @@ void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
   {
     defines << "#define RF_PEEL_CAPTURE\n";
   }
+  this->UseSHTransfer = shTransfer;
+  if (shTransfer)
+  {
+    defines << "#define RF_GBUFFER_SH " << (dataColour ? 2 : 1) << "\n";
+    for (vtkProp* prop : glass)
+    {
+      this->SHTransfer->MapVertexIds(prop);
+    }
+  }
   if (defines.str() != this->Defines)
   {
     this->Defines = defines.str();
@@ -111,6 +120,13 @@ void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
       this->MapNormalDistance(prop);
     }
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionGeometryStage::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->Superclass::ReleaseGraphicsResources(w);
+  this->SHTransfer->ReleaseGraphicsResources(w);
 }
 
 //------------------------------------------------------------------------------
@@ -131,13 +147,16 @@ void vtkRefractionGeometryStage::DrawProps(vtkOpenGLRenderer* ren, int stage)
   this->PreRender(&state);
   this->Stage = stage;
   this->State = ostate;
+  this->Renderer = ren;
   this->NumberOfRenderedProps = 0;
   for (vtkProp* prop : this->Glass)
   {
     this->NumberOfRenderedProps += prop->RenderOpaqueGeometry(ren);
   }
   this->State = nullptr;
+  this->Renderer = nullptr;
   this->Stage = STAGE_NONE;
+  this->SHTransfer->Unbind();
   this->PostRender(&state);
   ostate->vtkglCullFace(static_cast<unsigned int>(cullMode));
 }
@@ -207,6 +226,10 @@ void vtkRefractionGeometryStage::DrawFront(vtkOpenGLRenderer* ren, vtkRefraction
   if (this->NormalDistance)
   {
     colours.push_back(vtkRefractionTargets::FRONT_AUX);
+  }
+  if (this->UseSHTransfer)
+  {
+    colours.push_back(vtkRefractionTargets::FRONT_SH);
   }
   this->DrawIntoTargets(
     ren, targets, colours, vtkRefractionTargets::FRONT_DEPTH, 1.0, GL_LESS, STAGE_FRONT);
@@ -280,6 +303,19 @@ bool vtkRefractionGeometryStage::PreReplaceShaderValues(std::string& vertexShade
     std::string("//VTK::Output::Dec\n") + kDecTag + "\n", false);
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::Coincident::Impl",
     std::string("//VTK::Coincident::Impl\n") + kImplTag + "\n", false);
+  if (this->UseSHTransfer)
+  {
+    // The SH method's exit direction and length, per vertex (rfSHTransferVS.glsl).
+    std::string source = rfSHTransferVSSource;
+    const size_t marker = source.find(kImplMarker);
+    std::string declarations = source.substr(0, marker);
+    const std::string body = source.substr(marker + std::string(kImplMarker).size());
+    vtkShaderProgram::Substitute(declarations, "//RF::Kernel", rfKernelSource);
+    vtkShaderProgram::Substitute(
+      vertexShader, "//VTK::Normal::Dec", "//VTK::Normal::Dec\n" + declarations, false);
+    vtkShaderProgram::Substitute(
+      vertexShader, "//VTK::Normal::Impl", "//VTK::Normal::Impl\n" + body, false);
+  }
   if (this->NormalDistance)
   {
     // d_N travels as a generic vertex attribute (MapNormalDistance) to a varying.
@@ -365,6 +401,11 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
       static_cast<float>(this->Origin[1]), static_cast<float>(this->Width),
       static_cast<float>(this->Height) };
     program->SetUniform4f("rfViewport", viewport);
+  }
+  if (this->UseSHTransfer && this->State)
+  {
+    this->SHTransfer->Bind(program, prop, this->Renderer,
+      static_cast<vtkOpenGLRenderWindow*>(this->Renderer->GetRenderWindow()));
   }
   if (this->Stage == STAGE_PEEL && this->PeelPrevious && program->IsUniformUsed("rfPeelPrevious"))
   {

@@ -14,6 +14,7 @@
 
 #include "vtkOpenGLRenderPass.h"
 #include "vtkNew.h"       // For members
+#include "vtkRefractionSHTransfer.h" // For members
 #include "vtkWeakPointer.h" // For members
 
 #include <map>    // For members
@@ -52,9 +53,10 @@ public:
    * layout) and projection type.
    */
   void Configure(const std::vector<vtkProp*>& glass, bool normalDistance, bool dataColour,
-    bool backNearest, bool peel, vtkMatrix4x4* inverseProjection, bool parallel);
+    bool backNearest, bool peel, bool shTransfer, vtkMatrix4x4* inverseProjection,
+    bool parallel);
 
-  /// The front G-buffer (FRONT_SURFACE, FRONT_COLOR and FRONT_AUX when configured,
+  /// The front G-buffer (FRONT_SURFACE, FRONT_COLOR, FRONT_AUX and FRONT_SH when configured,
   /// FRONT_DEPTH).
   void DrawFront(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets);
   /// The back capture (BACK_SURFACE, BACK_Z).
@@ -79,6 +81,9 @@ public:
   bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
     vtkOpenGLVertexArrayObject* vao = nullptr) override;
   vtkMTimeType GetShaderStageMTime() override;
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+  /// Bytes of the SH method's coefficient textures.
+  unsigned long long GetSHBytes() const { return this->SHTransfer->GetBytes(); }
 
 protected:
   vtkRefractionGeometryStage();
@@ -111,7 +116,10 @@ private:
   std::map<vtkProp*, int> MaterialIndex;
   std::map<vtkPolyData*, Surface> Surfaces;
   vtkOpenGLState* State = nullptr;
+  vtkOpenGLRenderer* Renderer = nullptr; ///< during a draw
   std::vector<vtkWeakPointer<vtkMapper>> NormalDistanceMappers;
+  vtkNew<vtkRefractionSHTransfer> SHTransfer;
+  bool UseSHTransfer = false;
   bool NormalDistance = false;
   bool DataColour = false;
   bool BackNearest = false;

@@ -3,6 +3,7 @@
 #include "vtkRefractionMethodDIR.h"
 #include "vtkRefractionMethodISR.h"
 #include "vtkRefractionMethodPEEL.h"
+#include "vtkRefractionMethodSH.h"
 #include "vtkRefractionMethodSIR.h"
 #include "vtkRefractionMethodSSP.h"
 #include "vtkRefractionPass.h"
@@ -23,6 +24,8 @@ vtkSmartPointer<vtkRefractionMethod> vtkRefractionMethod::Create(int method)
       return vtkSmartPointer<vtkRefractionMethodSSP>::New();
     case vtkRefractionPass::PEEL:
       return vtkSmartPointer<vtkRefractionMethodPEEL>::New();
+    case vtkRefractionPass::SH:
+      return vtkSmartPointer<vtkRefractionMethodSH>::New();
     default:
       return nullptr;
   }
@@ -62,6 +65,7 @@ void vtkRefractionMethod::AddTargets(std::vector<bool>& wanted, vtkRefractionPas
   wanted[vtkRefractionTargets::PEEL_Z] = layers > 1;
   wanted[vtkRefractionTargets::PEEL_DEPTHS_A] = layers > 1;
   wanted[vtkRefractionTargets::PEEL_DEPTHS_B] = layers > 4;
+  wanted[vtkRefractionTargets::FRONT_SH] = this->NeedsSHTransfer();
 }
 
 //------------------------------------------------------------------------------

@@ -40,6 +40,8 @@ public:
   virtual bool SupportsSceneRefraction() const { return true; }
   /// ISR's d_N in the G-buffer.
   virtual bool NeedsNormalDistance() const { return false; }
+  /// The SH method's per-vertex exit directions in the G-buffer (FRONT_SH).
+  virtual bool NeedsSHTransfer() const { return false; }
   /// Depth-peeled layers of the glass, counting the front G-buffer as layer 0 (PEEL); 1: none.
   virtual int GetPeelLayers(vtkRefractionPass*) const { return 1; }
 

@@ -24,6 +24,7 @@
 #include "vtkRefractionMaterials.h"
 #include "vtkRefractionMethod.h"
 #include "vtkRefractionOpaqueStep.h"
+#include "vtkRefractionSHTransfer.h"
 #include "vtkRefractionShadeStage.h"
 #include "vtkRefractionTargets.h"
 #include "vtkRenderState.h"
@@ -100,7 +101,7 @@ void vtkRefractionPass::SetDelegatePass(vtkRenderPass* delegatePass)
 void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  static const char* const names[] = { "SIR", "DIR", "ISR", "SSP", "PEEL" };
+  static const char* const names[] = { "SIR", "DIR", "ISR", "SSP", "PEEL", "SH" };
   os << indent << "Method: " << names[this->Method] << "\n";
   os << indent << "AdaptiveSearch: " << this->AdaptiveSearch << "\n";
   os << indent << "SecantRefinement: " << this->SecantRefinement << "\n";
@@ -340,7 +341,7 @@ const char* vtkRefractionPass::GetStageName(int stage)
 //------------------------------------------------------------------------------
 unsigned long long vtkRefractionPass::GetTextureBytes() const
 {
-  return this->Targets->GetBytes();
+  return this->Targets->GetBytes() + this->GeometryStage->GetSHBytes();
 }
 
 //------------------------------------------------------------------------------
@@ -435,10 +436,28 @@ void vtkRefractionPass::RenderGlass(
     return;
   }
   this->WarnedEmptyViewport = false;
-  if (!this->MethodObject || this->MethodObjectType != this->Method)
+  int methodType = this->Method;
+  if (methodType == SH)
   {
-    this->MethodObject = vtkRefractionMethod::Create(this->Method);
-    this->MethodObjectType = this->Method;
+    std::string reason;
+    if (!vtkRefractionSHTransfer::Check(glass, reason))
+    {
+      if (reason != this->WarnedSHTransfer)
+      {
+        vtkWarningMacro("SH: " << reason << "; drawing the glass with DIR.");
+      }
+      this->WarnedSHTransfer = reason;
+      methodType = DIR;
+    }
+    else
+    {
+      this->WarnedSHTransfer.clear();
+    }
+  }
+  if (!this->MethodObject || this->MethodObjectType != methodType)
+  {
+    this->MethodObject = vtkRefractionMethod::Create(methodType);
+    this->MethodObjectType = methodType;
   }
   vtkRefractionMethod* method = this->MethodObject;
   const bool reduction =
@@ -507,8 +526,8 @@ void vtkRefractionPass::RenderGlass(
   }
   const int peelLayers = method->GetPeelLayers(this);
   this->GeometryStage->Configure(glass, method->NeedsNormalDistance(), dataColour,
-    this->BackSurface == BACK_SURFACE_NEAREST, peelLayers > 1, this->InverseProjectionGL,
-    this->Parallel);
+    this->BackSurface == BACK_SURFACE_NEAREST, peelLayers > 1, method->NeedsSHTransfer(),
+    this->InverseProjectionGL, this->Parallel);
 
   // Stages this method does not run report no time (not the last method's).
   for (int stage = 0; stage < TIMED_STAGE_COUNT; ++stage)

@@ -35,6 +35,7 @@
 #include "vtkSmartPointer.h"              // For members
 
 #include <memory> // For std::unique_ptr
+#include <string> // For members
 #include <vector> // For members
 
 class vtkImageData;
@@ -71,7 +72,11 @@ public:
    * the normal, with the chapter's refraction mask so that objects in front do not leak in.
    * PEEL (Chi, Wang & Hu) peels PeelLayers layers of all the glass and follows the ray through
    * every interface they hold: glass inside glass and glass behind glass refract each other,
-   * each with its own index, and total internal reflection is followed (TIRBounces).
+   * each with its own index, and total internal reflection is followed (TIRBounces). SH
+   * (Genevaux et al.) reads exit directions precomputed per vertex through every interface as
+   * spherical harmonics, for static meshes that went through vtkSHTransferFilter (module
+   * Refraction::Reference); a glass mesh without a fitting transfer (none, stale after its
+   * points changed, or for another index) is reported and the frame is drawn with DIR.
    */
   enum MethodType
   {
@@ -79,7 +84,8 @@ public:
     DIR = 1,
     ISR = 2,
     SSP = 3,
-    PEEL = 4
+    PEEL = 4,
+    SH = 5
   };
   /// The point array ISR reads d_N from.
   static const char* GetISRDistanceArrayName() { return "ISRNormalDistance"; }
@@ -153,7 +159,7 @@ public:
 
   ///@{
   /// Refraction method (DIR by default).
-  vtkSetClampMacro(Method, int, SIR, PEEL);
+  vtkSetClampMacro(Method, int, SIR, SH);
   vtkGetMacro(Method, int);
   ///@}
 
@@ -435,6 +441,7 @@ protected:
   double StageMilliseconds[TIMED_STAGE_COUNT] = { -1.0, -1.0, -1.0, -1.0 };
 
   bool WarnedEmptyViewport = false;
+  std::string WarnedSHTransfer; ///< the last reason SH fell back to DIR, said once
   bool WarnedEnvironment = false;
   int Width = 0;
   int Height = 0;

@@ -57,6 +57,7 @@ const TargetSampler kSamplers[] = {
   { vtkRefractionTargets::PEEL_7, "rfPeel7" },
   { vtkRefractionTargets::PEEL_DEPTHS_A, "rfPeelDepthsA" },
   { vtkRefractionTargets::PEEL_DEPTHS_B, "rfPeelDepthsB" },
+  { vtkRefractionTargets::FRONT_SH, "rfFrontSH" },
 };
 }
 

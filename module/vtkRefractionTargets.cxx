@@ -45,6 +45,7 @@ const TargetFormat kFormats[vtkRefractionTargets::TARGET_COUNT] = {
   { "peel z-buffer", 0, 0, 0, vtkTextureObject::Nearest },
   { "peeled depths 0-3", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "peeled depths 4-7", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
+  { "front SH exit", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "debug P2", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "debug T2", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
 };

@@ -51,6 +51,7 @@ public:
     PEEL_Z,            ///< DEPTH32F: the depth test of the peeling
     PEEL_DEPTHS_A,     ///< RGBA32F: the depths of layers 0-3 (vtkRefractionLayerPack)
     PEEL_DEPTHS_B,     ///< RGBA32F: the depths of layers 4-7
+    FRONT_SH,          ///< RGBA32F: the SH method's exit direction (view space) and length
     DEBUG_0,           ///< RGBA32F: P2 and |P2 - P1|
     DEBUG_1,           ///< RGBA32F: T2 and the flags
     TARGET_COUNT

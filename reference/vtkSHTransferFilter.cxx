@@ -154,6 +154,14 @@ int vtkSHTransferFilter::RequestData(
   settings->SetValue(3, this->IndexOfRefraction);
   output->GetFieldData()->AddArray(settings);
   output->GetPointData()->AddArray(transfer);
+  vtkNew<vtkFloatArray> vertexIds;
+  vertexIds->SetName(GetVertexIdArrayName());
+  vertexIds->SetNumberOfTuples(pointCount);
+  for (vtkIdType i = 0; i < pointCount; ++i)
+  {
+    vertexIds->SetValue(i, static_cast<float>(i));
+  }
+  output->GetPointData()->AddArray(vertexIds);
   if (pointCount == 0 || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
   {
     this->LastComputeSeconds = 0.0;

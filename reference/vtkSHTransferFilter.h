@@ -7,8 +7,9 @@
  * stores them as spherical-harmonic coefficients (rf_sh_transfer, Embree on the CPU, on
  * Threads threads). This filter adds them as the point array "SHTransfer": 4 (L + 1)^2
  * components per point, the exit direction's x, y, z and the length, each (L + 1)^2
- * coefficients, in the input's model coordinates; the field array "SHTransferSettings" holds
- * the order, the directions, the bounces and the index of refraction used.
+ * coefficients, in the input's model coordinates, and "SHVertexId", each point's index; the
+ * field array "SHTransferSettings" holds the order, the directions, the bounces and the index
+ * of refraction used.
  *
  * The result is cached on disk (CacheDirectory; default $XDG_CACHE_HOME/refraction-glass or
  * ~/.cache/refraction-glass; empty after SetCacheDirectory("") disables it), keyed by a hash
@@ -34,6 +35,9 @@ public:
   static const char* GetArrayName() { return "SHTransfer"; }
   /// The field array of the settings: order, directions, bounces, index of refraction.
   static const char* GetSettingsArrayName() { return "SHTransferSettings"; }
+  /// The point array of each point's own index (a float), by which the pass's vertex shader
+  /// finds the point's coefficients (the mapper may reorder or repeat the points).
+  static const char* GetVertexIdArrayName() { return "SHVertexId"; }
 
   ///@{
   /// SH order L, 0..8 (default 8, as the paper).

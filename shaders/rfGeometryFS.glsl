@@ -9,7 +9,8 @@
 //    cleared texel, 0, is no glass); with RF_GBUFFER_COLOUR (output 1) the data's
 //    colour VTK computed (the actor's, or the scalars through the lookup table; alpha: how much
 //    of an edge VTK draws there, with EdgeVisibility), with
-//    RF_GBUFFER_NORMAL_DISTANCE (its output index) ISR's d_N.
+//    RF_GBUFFER_NORMAL_DISTANCE (its output index) ISR's d_N, with RF_GBUFFER_SH (its output
+//    index) the SH method's exit direction and length.
 //  2 back: DIR pass 1 (Oliveira & Brauwers 2007, section 3.1): outward normal and (in alpha)
 //    -z_view of the back surface. Drawn with GL_GREATER and depth cleared to 0, so the furthest surface
 //    wins whatever the mesh's winding; empty texels keep 0, which is what the search tests
@@ -31,6 +32,9 @@ uniform float rfMaterial;
 uniform int rfParallel;
 uniform mat4 rfDCVC;
 uniform vec4 rfViewport;
+#ifdef RF_GBUFFER_SH
+in vec4 rfSHExitVSOut; // the SH method's exit direction (view) and length (rfSHTransferVS.glsl)
+#endif
 #ifdef RF_PEEL_CAPTURE
 uniform sampler2D rfPeelPrevious;
 uniform int rfOutwardFront;
@@ -121,6 +125,13 @@ vec3 rfReconstructPositionVC()
 #ifdef RF_GBUFFER_COLOUR
       // Literal indices: VTK maps gl_FragData[n] to its outputs by their text.
       gl_FragData[1] = vec4(clamp(rfDataColour.rgb, 0.0, 1.0), RF_EDGE_MIX);
+#endif
+#ifdef RF_GBUFFER_SH
+#if RF_GBUFFER_SH == 1
+      gl_FragData[1] = rfSHExitVSOut;
+#else
+      gl_FragData[2] = rfSHExitVSOut;
+#endif
 #endif
 #ifdef RF_GBUFFER_NORMAL_DISTANCE
       // d_N is measured in model coordinates: scaled with the actor; -1 marks "none".

@@ -124,6 +124,11 @@
 // or uniforms, so the kernel's handles are plain ints and the stage that defines RF_PEEL_LAYERS
 // provides the lookups (shaders/rfMethodPEEL.glsl); the material table's handle is the
 // colour channel whose indices are read (dispersion).
+// The SH method's coefficient table: the stage that defines RF_SH_TABLE defines
+// rf_sh_coefficient(table, i) too; the handle is the function (0..3) read.
+#ifdef RF_SH_TABLE
+#define rf_sh_table int
+#endif
 #ifdef RF_PEEL_LAYERS
 #define rf_layer_stack int
 #define rf_material_table int

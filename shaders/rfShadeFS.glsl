@@ -4,7 +4,7 @@
 // at the front surface, asks the method for the exit point and normal (rfFindExit, from
 // rfMethod<NAME>.glsl) and refracts again into the environment. Writes the glass's colour and
 // its depth, so the opaque scene's depth test keeps hidden glass hidden.
-// Defines set by the pass: RF_METHOD_{SIR,DIR,ISR,SSP,PEEL}, RF_TIR_CLAMP, RF_FRESNEL,
+// Defines set by the pass: RF_METHOD_{SIR,DIR,ISR,SSP,PEEL,SH}, RF_TIR_CLAMP, RF_FRESNEL,
 // RF_ENV_CUBEMAP or RF_ENV_BACKGROUND (else the built-in environment), RF_SCENE_REFRACTION,
 // RF_SCENE_STEPS, RF_TINT, RF_DISPERSION, RF_MAX_MATERIALS, RF_DEBUG_OUTPUT, RF_CORNER_SAMPLES
 // (anti-aliasing: the pixels' corners into the corner target instead of the pixels) and the
@@ -231,8 +231,10 @@ rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, int channel)
   vec3 P2 = P;
   int tir = tirIn ? 2 : 0;
   vec3 N2;
-#ifdef RF_METHOD_PEEL
+#if defined(RF_METHOD_PEEL) || defined(RF_METHOD_SH)
   float insideLength = 0.0;
+#endif
+#ifdef RF_METHOD_PEEL
   vec3 branchP = P;
   vec3 branchT = T2;
   float branchWeight = 0.0;
@@ -244,7 +246,19 @@ rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, int channel)
     P2 = P + (sheet / max(-dot(T1, N1), 1e-3)) * T1;
     T2 = V;
   }
-#ifdef RF_METHOD_PEEL
+#ifdef RF_METHOD_SH
+  else if (!tirIn)
+  {
+    // Precomputed through every interface (rfMethodSH.glsl); the exit point is taken along T1
+    // at the stored length, for the scene behind.
+    vec3 exitDirection;
+    if (rfSHExit(exitDirection, insideLength))
+    {
+      T2 = exitDirection;
+      P2 = P + insideLength * T1;
+    }
+  }
+#elif defined(RF_METHOD_PEEL)
   else if (!tirIn)
   {
     // Every interface the layers hold (rfMethodPEEL.glsl); TIR flag 1 where a reflection ended
@@ -307,7 +321,7 @@ rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, int channel)
   // glass; along the measured path |P2 - P1| it keeps colour^(|P2 - P1| / distance). Where no
   // exit was found (SIR, TIR at the entry) the path is taken as that distance.
   vec3 tint = texelFetch(rfFrontColour, rfPixel, 0).rgb;
-#ifdef RF_METHOD_PEEL
+#if defined(RF_METHOD_PEEL) || defined(RF_METHOD_SH)
   float path = insideLength > 0.0 ? insideLength : rfAbsorptionDistance;
 #else
   float path = length(P2 - P) > 0.0 ? length(P2 - P) : rfAbsorptionDistance;

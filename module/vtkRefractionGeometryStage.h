@@ -82,6 +82,8 @@ public:
     vtkOpenGLVertexArrayObject* vao = nullptr) override;
   vtkMTimeType GetShaderStageMTime() override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
+  /// The SH method's smoothing of the weights (vtkRefractionPass::SetSHSmoothing).
+  void SetSHSmoothing(double width) { this->SHTransfer->SetSmoothing(width); }
   /// Bytes of the SH method's coefficient textures.
   unsigned long long GetSHBytes() const { return this->SHTransfer->GetBytes(); }
 

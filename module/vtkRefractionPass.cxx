@@ -118,6 +118,7 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AntiAliasing: " << this->AntiAliasing << "\n";
   os << indent << "TIRBounces: " << this->TIRBounces << "\n";
   os << indent << "PeelLayers: " << this->PeelLayers << "\n";
+  os << indent << "SHSmoothing: " << this->SHSmoothing << "\n";
   os << indent << "EnvironmentMode: "
      << (this->EnvironmentMode == ENVIRONMENT_RENDERER ? "renderer" : "builtin") << "\n";
   os << indent << "SceneRefraction: " << this->SceneRefraction << "\n";
@@ -525,6 +526,7 @@ void vtkRefractionPass::RenderGlass(
                     << vtkRefractionShadeStage::MaximumMaterials << " are told apart).");
   }
   const int peelLayers = method->GetPeelLayers(this);
+  this->GeometryStage->SetSHSmoothing(this->SHSmoothing);
   this->GeometryStage->Configure(glass, method->NeedsNormalDistance(), dataColour,
     this->BackSurface == BACK_SURFACE_NEAREST, peelLayers > 1, method->NeedsSHTransfer(),
     this->InverseProjectionGL, this->Parallel);

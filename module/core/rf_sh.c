@@ -87,6 +87,37 @@ rf_status rf_sh_accumulate(int order, const double direction[3], double value, d
   return RF_OK;
 }
 
+rf_status rf_sh_smooth(int order, double width, double* coefficients)
+{
+  int l;
+  int m;
+  if (coefficients == NULL)
+  {
+    return RF_ERR_NULL_ARGUMENT;
+  }
+  if (rf_sh_coefficient_count(order) == 0)
+  {
+    return RF_ERR_STEPS_OUT_OF_RANGE;
+  }
+  if (!isfinite(width))
+  {
+    return RF_ERR_NOT_FINITE;
+  }
+  if (width <= 0.0)
+  {
+    return RF_OK;
+  }
+  for (l = 0; l <= order; ++l)
+  {
+    const double factor = exp(-(double)(l * l) / (2.0 * width * width));
+    for (m = -l; m <= l; ++m)
+    {
+      coefficients[l * (l + 1) + m] *= factor;
+    }
+  }
+  return RF_OK;
+}
+
 rf_status rf_sh_evaluate(int order, const double* coefficients, const double direction[3],
   double* value)
 {

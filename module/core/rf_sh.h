@@ -33,6 +33,12 @@ rf_status rf_sh_accumulate(int order, const double direction[3], double value, d
 rf_status rf_sh_evaluate(int order, const double* coefficients, const double direction[3],
   double* value);
 
+/* The semi-Gaussian low-pass filter on SH weights of Genevaux et al. (section 4.3, after Westin
+ * et al. 1992): every coefficient of band l is multiplied by exp(-l^2 / (2 width^2)), which
+ * damps the ringing (Gibbs phenomenon) of the truncated series. width <= 0 leaves them.
+ * Errors: RF_ERR_NULL_ARGUMENT, RF_ERR_STEPS_OUT_OF_RANGE, RF_ERR_NOT_FINITE. */
+rf_status rf_sh_smooth(int order, double width, double* coefficients);
+
 #ifdef __cplusplus
 }
 #endif

@@ -24,6 +24,7 @@
 #include "vtkRefractionEGL.h"
 #include "vtkRefractionPass.h"
 #include "vtkRefractionReference.h"
+#include "vtkSHTransferFilter.h"
 
 #include <vtkActor.h>
 #include <vtkAxis.h>
@@ -108,7 +109,7 @@ struct Options
 
 struct Setting
 {
-  std::string Method; // none (the pass without glass), SIR, DIR, ISR, SSP, PEEL
+  std::string Method; // none (the pass without glass), SIR, DIR, ISR, SSP, PEEL, SH
   int Steps = 5;
   bool Bounds = false;
   bool Adaptive = false;
@@ -1087,10 +1088,10 @@ bool WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
   view->GetScene()->AddItem(matrix);
   matrix->SetSize(vtkVector2i(columns, rowsCount));
   const char* families[] = { "SIR", "DIR reduction", "DIR bbox", "DIR adaptive", "ISR", "SSP",
-    "DIR paper (no secant)", "DIR nearest back", "PEEL" };
+    "DIR paper (no secant)", "DIR nearest back", "PEEL", "SH" };
   const unsigned char colours[][3] = { { 120, 120, 120 }, { 31, 119, 180 }, { 255, 127, 14 },
     { 44, 160, 44 }, { 214, 39, 40 }, { 148, 103, 189 }, { 140, 86, 75 }, { 23, 190, 207 },
-    { 227, 119, 194 } };
+    { 227, 119, 194 }, { 188, 189, 34 } };
   for (size_t m = 0; m < meshes.size(); ++m)
   {
     vtkChart* chart = matrix->GetChart(vtkVector2i(static_cast<int>(m % columns),
@@ -1100,7 +1101,7 @@ bool WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
     chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE against the supersampled full reference");
     chart->SetShowLegend(m == 0);
     double largest[2] = { 0.0, 0.0 }; // x, y over every plotted point
-    for (int family = 0; family < 9; ++family)
+    for (int family = 0; family < 10; ++family)
     {
       vtkNew<vtkTable> table;
       vtkNew<vtkFloatArray> x;
@@ -1116,7 +1117,8 @@ bool WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
           r.Config.NoScene)
           continue;
         const std::string& method = r.Config.Method;
-        const int f = method == "PEEL" ? 8
+        const int f = method == "SH" ? 9
+          : method == "PEEL" ? 8
           : method == "SIR" ? 0
           : method == "ISR" ? 4
           : method == "SSP" ? 5
@@ -1287,6 +1289,7 @@ std::vector<Setting> Settings(const Options& o)
     for (int layers : { 2, 4, 8 })
       settings.push_back(peel(layers, 0));
     settings.push_back(peel(4, 2));
+    settings.push_back({ "SH", 0 });
     return settings;
   }
   if (o.Smoke)
@@ -1294,6 +1297,7 @@ std::vector<Setting> Settings(const Options& o)
     for (const char* method : { "SIR", "DIR", "ISR", "SSP" })
       settings.push_back({ method, 5 });
     settings.push_back(peel(4, 2));
+    settings.push_back({ "SH", 0 });
     return settings;
   }
   settings.push_back({ "none", 0 });
@@ -1315,6 +1319,7 @@ std::vector<Setting> Settings(const Options& o)
   for (int layers : { 2, 4, 8 })
     for (int tirBounces : { 0, 2, 4 })
       settings.push_back(peel(layers, tirBounces));
+  settings.push_back({ "SH", 0 });
   return settings;
 }
 
@@ -1333,6 +1338,7 @@ int MethodId(const std::string& m)
     : m == "ISR"        ? vtkRefractionPass::ISR
     : m == "SSP"        ? vtkRefractionPass::SSP
     : m == "PEEL"       ? vtkRefractionPass::PEEL
+    : m == "SH"         ? vtkRefractionPass::SH
                         : vtkRefractionPass::DIR;
 }
 
@@ -1361,7 +1367,24 @@ struct Scene
   std::vector<vtkSmartPointer<vtkActor>> Surroundings; // the scene mesh's plane and axes
   vtkSmartPointer<vtkActor> Inner; // the nested mesh's inner contour, glass of IOR 1.9
   vtkIdType Triangles = 0;
+  double SHSeconds = 0.0; // the SH method's precomputation of the scene's glass
 };
+
+// The SH method's precomputation between a mesh and its mapper (order 8, as the paper; no
+// cache, so that its time is measured); adds its seconds to `seconds`.
+vtkSmartPointer<vtkAlgorithm> WithSHTransfer(
+  vtkAlgorithm* mesh, double ior, const Options& o, double& seconds)
+{
+  auto transfer = vtkSmartPointer<vtkSHTransferFilter>::New();
+  transfer->SetInputConnection(mesh->GetOutputPort());
+  transfer->SetIndexOfRefraction(ior);
+  transfer->SetOrder(8);
+  transfer->SetDirections(o.Smoke ? 64 : 1024);
+  transfer->SetCacheDirectory("");
+  transfer->Update();
+  seconds += transfer->GetLastComputeSeconds();
+  return transfer;
+}
 
 // Makes the scene's glass glass (IOR 1.5, the nested mesh's inner contour 1.9), or clears it.
 void SetGlass(const Scene& scene, bool glass)
@@ -1518,6 +1541,7 @@ int main(int argc, char* argv[])
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
   };
 
+  const std::vector<Setting> settings = Settings(options);
   std::vector<Scene> scenes;
   for (const std::string& name : options.Meshes)
   {
@@ -1530,8 +1554,17 @@ int main(int argc, char* argv[])
     }
     vtkPolyData* poly = vtkPolyData::SafeDownCast(scene.Mesh->GetOutputDataObject(0));
     scene.Triangles = poly->GetNumberOfPolys() + poly->GetNumberOfStrips();
+    const bool sh = name != "scene" &&
+      std::any_of(settings.begin(), settings.end(), [](const Setting& s) { return s.Method == "SH"; });
+    vtkSmartPointer<vtkAlgorithm> drawn = scene.Mesh;
+    if (sh)
+    {
+      std::printf("SH precomputation of %s...\n", name.c_str());
+      std::fflush(stdout);
+      drawn = WithSHTransfer(scene.Mesh, 1.5, options, scene.SHSeconds);
+    }
     vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputConnection(scene.Mesh->GetOutputPort());
+    mapper->SetInputConnection(drawn->GetOutputPort());
     mapper->ScalarVisibilityOff();
     scene.Actor = vtkSmartPointer<vtkActor>::New();
     scene.Actor->SetMapper(mapper);
@@ -1541,7 +1574,11 @@ int main(int argc, char* argv[])
     }
     if (name == "nested")
     {
-      auto inner = MakeMesh("nested-inner", options);
+      vtkSmartPointer<vtkAlgorithm> inner = MakeMesh("nested-inner", options);
+      if (sh)
+      {
+        inner = WithSHTransfer(inner, 1.9, options, scene.SHSeconds);
+      }
       vtkNew<vtkPolyDataMapper> innerMapper;
       innerMapper->SetInputConnection(inner->GetOutputPort());
       innerMapper->ScalarVisibilityOff();
@@ -1566,7 +1603,6 @@ int main(int argc, char* argv[])
   // have always been measured over), the renderer's background for the scene mesh; each
   // reference follows the pass.
   pass->SetEnvironmentModeToBuiltin();
-  const std::vector<Setting> settings = Settings(options);
   const int ss = options.Supersample;
 
   // Errors do not depend on timing noise: one picture per row, against the four references
@@ -1620,7 +1656,7 @@ int main(int argc, char* argv[])
           auto* distances = vtkISRDistanceFilter::SafeDownCast(scene.Mesh);
           row.PrecomputeMs = setting.Method == "ISR" && distances
             ? distances->GetLastComputeSeconds() * 1e3
-            : 0.0;
+            : setting.Method == "SH" ? scene.SHSeconds * 1e3 : 0.0;
           Measure(row, colour, debug, truth, size);
           if (options.Dump)
           {

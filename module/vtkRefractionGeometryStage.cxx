@@ -96,6 +96,7 @@ void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
     defines << "#define RF_PEEL_CAPTURE\n";
   }
   this->UseSHTransfer = shTransfer;
+  this->SHTransfer->Retain(shTransfer ? glass : std::vector<vtkProp*>());
   if (shTransfer)
   {
     defines << "#define RF_GBUFFER_SH " << (dataColour ? 2 : 1) << "\n";

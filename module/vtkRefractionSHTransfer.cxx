@@ -20,6 +20,7 @@
 #include "rf_sh.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -219,6 +220,27 @@ bool vtkRefractionSHTransfer::Bind(
   program->SetUniformf(
     "rfSHLengthScale", static_cast<float>(std::cbrt(std::abs(vtkMath::Determinant3x3(m)))));
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionSHTransfer::Retain(const std::vector<vtkProp*>& glass)
+{
+  std::vector<vtkPolyData*> meshes;
+  for (vtkProp* prop : glass)
+  {
+    meshes.push_back(MeshOf(prop));
+  }
+  for (auto upload = this->Uploads.begin(); upload != this->Uploads.end();)
+  {
+    if (std::find(meshes.begin(), meshes.end(), upload->first) == meshes.end())
+    {
+      upload = this->Uploads.erase(upload);
+    }
+    else
+    {
+      ++upload;
+    }
+  }
 }
 
 //------------------------------------------------------------------------------

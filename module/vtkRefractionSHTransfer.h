@@ -48,6 +48,9 @@ public:
     vtkOpenGLRenderWindow* renWin);
   /// The semi-Gaussian filter's width on the weights (rf_sh_smooth); <= 0: none.
   void SetSmoothing(double width) { this->Smoothing = width; }
+  /// Keeps the uploads of these props' meshes only (all are released for an empty list): a
+  /// method other than SH, or glass that went away, holds no coefficient texture.
+  void Retain(const std::vector<vtkProp*>& glass);
   /// Deactivates what Bind activated.
   void Unbind();
   /// Bytes of the coefficient textures.

@@ -14,6 +14,11 @@
 #include "rf_require.h"
 
 #include <vtkActor.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkFloatArray.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
 #include <vtkProperty.h>
 #include <vtkNew.h>
 #include <vtkPolyDataMapper.h>
@@ -109,6 +114,53 @@ int main()
     RF_REQUIRE(pass->GetNumberOfGlassProps() == 1, "%s: the sphere was not drawn as glass", c.Name);
     RF_REQUIRE(bytes == c.Expected, "%s: %llu bytes allocated, %llu expected", c.Name, bytes,
       c.Expected);
+  }
+  // SH: the front G-buffer, the exit target (RGBA32F) and the coefficient texture (RGBA32F,
+  // rows of 4096 texels, one per coefficient and point); another method releases both. The
+  // transfer's arrays are made here (zeros; vtkSHTransferFilter is in another module): the
+  // pass only needs their shape to draw.
+  {
+    sphere->Update();
+    vtkNew<vtkPolyData> withTransfer;
+    withTransfer->DeepCopy(sphere->GetOutput());
+    const vtkIdType points = withTransfer->GetNumberOfPoints();
+    vtkNew<vtkFloatArray> transfer;
+    transfer->SetName("SHTransfer");
+    transfer->SetNumberOfComponents(4 * 9); // order 2
+    transfer->SetNumberOfTuples(points);
+    transfer->Fill(0.0);
+    vtkNew<vtkFloatArray> ids;
+    ids->SetName("SHVertexId");
+    ids->SetNumberOfTuples(points);
+    for (vtkIdType i = 0; i < points; ++i)
+    {
+      ids->SetValue(i, static_cast<float>(i));
+    }
+    vtkNew<vtkDoubleArray> settings;
+    settings->SetName("SHTransferSettings");
+    settings->SetNumberOfValues(4);
+    settings->SetValue(0, 2.0);
+    settings->SetValue(1, 64.0);
+    settings->SetValue(2, 4.0);
+    settings->SetValue(3, 1.5);
+    withTransfer->GetPointData()->AddArray(transfer);
+    withTransfer->GetPointData()->AddArray(ids);
+    withTransfer->GetFieldData()->AddArray(settings);
+    mapper->SetInputData(withTransfer);
+    pass->SetDataColour(true);
+    pass->SetDebugOutput(false);
+    pass->SetMethod(vtkRefractionPass::SH);
+    window->Render();
+    const unsigned long long rows = (static_cast<unsigned long long>(points) * 9 + 4095) / 4096;
+    const unsigned long long expected = front + 16 * pixels + 16ULL * 4096 * rows;
+    std::printf("SH           %10llu bytes, expected %llu\n", pass->GetTextureBytes(), expected);
+    RF_REQUIRE(pass->GetTextureBytes() == expected, "SH: %llu bytes, %llu expected",
+      pass->GetTextureBytes(), expected);
+    pass->SetMethod(vtkRefractionPass::SIR);
+    window->Render();
+    RF_REQUIRE(pass->GetTextureBytes() == front, "SIR after SH holds %llu bytes, %llu expected",
+      pass->GetTextureBytes(), front);
+    mapper->SetInputConnection(sphere->GetOutputPort());
   }
   // White glass without scalar colours or edges: no colour target, even with DataColour on.
   actor->GetProperty()->SetColor(1.0, 1.0, 1.0);

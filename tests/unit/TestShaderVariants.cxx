@@ -173,6 +173,12 @@ int main()
         p->SetTIRPolicy(vtkRefractionPass::TIR_REFLECT);
       },
       true, true },
+    { "PEEL, anti-aliasing",
+      [](vtkRefractionPass* p) {
+        p->SetMethod(vtkRefractionPass::PEEL);
+        p->AntiAliasingOn();
+      },
+      true, true },
     { "all non-defaults",
       [](vtkRefractionPass* p) {
         p->SetTIRPolicy(vtkRefractionPass::TIR_REFLECT);

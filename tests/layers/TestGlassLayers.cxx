@@ -25,6 +25,7 @@
 #include "vtkRefractionReference.h"
 #include "rf_metrics.h"
 
+#include "rfReferenceScene.h"
 #include "rfTestRig.h"
 #include "rfTestScene.h"
 #include "rf_require.h"
@@ -58,57 +59,21 @@ const int kSize = 160;
 // VTK's image error of the regression pictures (llvmpipe to llvmpipe gives 0).
 const double kRegressionThreshold = 0.15;
 
-struct Scene
+using Scene = rftest::ReferenceScene;
+
+// A ball of glass added to the scene.
+vtkSmartPointer<vtkActor> AddBall(
+  Scene& scene, double x, double y, double z, double radius, double ior)
 {
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkRefractionPass> Pass;
-  vtkSmartPointer<vtkRenderWindow> Window;
+  const double centre[3] = { x, y, z };
+  auto ball = rftest::GlassActor(rftest::SpherePoly(centre, radius, 96), ior);
+  scene.Renderer->AddActor(ball);
+  return ball;
+}
 
-  Scene()
-  {
-    this->Renderer->SetPass(this->Pass);
-    this->Pass->SetEnvironmentModeToBuiltin();
-    this->Renderer->SetBackground(0.0, 0.0, 0.0);
-    this->Window = rftest::MakeWindow(this->Renderer, kSize, kSize);
-  }
-  vtkSmartPointer<vtkActor> AddBall(double x, double y, double z, double radius, double ior)
-  {
-    const double centre[3] = { x, y, z };
-    auto ball = rftest::GlassActor(rftest::SpherePoly(centre, radius, 96), ior);
-    this->Renderer->AddActor(ball);
-    return ball;
-  }
-  void Look()
-  {
-    vtkCamera* camera = this->Renderer->GetActiveCamera();
-    camera->SetFocalPoint(0.0, 0.0, 0.0);
-    camera->SetPosition(0.0, 0.0, 8.0);
-    camera->SetViewUp(0.0, 1.0, 0.0);
-    camera->SetViewAngle(30.0);
-    this->Renderer->ResetCameraClippingRange();
-  }
-  vtkSmartPointer<vtkImageData> Render()
-  {
-    this->Look();
-    this->Window->Render();
-    return rftest::Grab(this->Window);
-  }
-};
-
-// A reference picture of the renderer's scene as it stands.
 vtkSmartPointer<vtkImageData> Trace(Scene& scene, int mode)
 {
-  scene.Look();
-  vtkNew<vtkRefractionReference> reference;
-  reference->SetMode(mode);
-  reference->SetEnvironmentMode(scene.Pass->GetEnvironmentMode());
-  if (!reference->Trace(scene.Renderer, kSize, kSize))
-  {
-    return nullptr;
-  }
-  auto output = vtkSmartPointer<vtkImageData>::New();
-  output->DeepCopy(reference->GetOutput());
-  return output;
+  return scene.Trace(mode);
 }
 
 // The pixels whose sight line meets `actor`, from the reference traced with it alone visible.
@@ -149,29 +114,9 @@ size_t Count(const std::vector<unsigned char>& mask)
   return n;
 }
 
-// PSNR of a picture of the pass against a reference's colours (clamped to [0, 1], what an
-// 8-bit window shows) on the pixels of `mask`; -1 where it cannot be measured.
 double PSNR(vtkImageData* picture, vtkImageData* reference, const std::vector<unsigned char>& mask)
 {
-  vtkDataArray* colour = reference->GetPointData()->GetArray("Colour");
-  if (!colour)
-  {
-    return -1.0;
-  }
-  std::vector<float> truth(3 * mask.size());
-  for (size_t i = 0; i < mask.size(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      truth[3 * i + c] = static_cast<float>(
-        std::min(1.0, std::max(0.0, colour->GetComponent(static_cast<vtkIdType>(i), c))));
-    }
-  }
-  const std::vector<float> measured = rftest::ToColour(picture);
-  double psnr = -1.0;
-  return rf_psnr(measured.data(), truth.data(), mask.size(), 3, mask.data(), &psnr) == RF_OK
-    ? psnr
-    : -1.0;
+  return rftest::PSNROnMask(picture, reference, mask);
 }
 
 // Pixels of `mask` where any channel of a and b differs by more than 24.
@@ -214,8 +159,8 @@ int Regression(int argc, char* argv[], vtkRenderWindow* window)
 int Overlapping(int argc, char* argv[])
 {
   Scene scene;
-  auto front = scene.AddBall(-0.35, 0.15, 1.2, 0.65, 1.5);
-  auto back = scene.AddBall(0.35, -0.1, -1.0, 0.95, 1.33);
+  auto front = AddBall(scene, -0.35, 0.15, 1.2, 0.65, 1.5);
+  auto back = AddBall(scene, 0.35, -0.1, -1.0, 0.95, 1.33);
   std::vector<unsigned char> both = Footprint(scene, front);
   const std::vector<unsigned char> behind = Footprint(scene, back);
   for (size_t i = 0; i < both.size(); ++i)
@@ -244,8 +189,8 @@ int Overlapping(int argc, char* argv[])
 int Nested(int argc, char* argv[])
 {
   Scene scene;
-  scene.AddBall(0.0, 0.0, 0.0, 1.0, 1.33);
-  auto inner = scene.AddBall(0.15, 0.1, 0.0, 0.5, 1.9);
+  AddBall(scene, 0.0, 0.0, 0.0, 1.0, 1.33);
+  auto inner = AddBall(scene, 0.15, 0.1, 0.0, 0.5, 1.9);
   const std::vector<unsigned char> innerPixels = Footprint(scene, inner);
   auto full = Trace(scene, vtkRefractionReference::FULL);
   RF_REQUIRE(full, "the full reference failed");
@@ -393,7 +338,7 @@ int TIR()
 int TwoLayersAreDIR()
 {
   Scene scene;
-  scene.AddBall(0.0, 0.0, 0.0, 1.0, 1.5);
+  AddBall(scene, 0.0, 0.0, 0.0, 1.0, 1.5);
   scene.Pass->SetMethod(vtkRefractionPass::DIR);
   auto dir = scene.Render();
   scene.Pass->SetMethod(vtkRefractionPass::PEEL);
@@ -425,7 +370,7 @@ int Deep()
   vtkNew<rftest::MessageLog> log;
   vtkOutputWindow::SetInstance(log);
   Scene scene;
-  auto ball = scene.AddBall(0.0, 0.0, 0.0, 1.0, 1.5);
+  auto ball = AddBall(scene, 0.0, 0.0, 0.0, 1.0, 1.5);
   scene.Pass->SetMethod(vtkRefractionPass::PEEL);
   scene.Pass->SetPeelLayers(4);
   auto four = scene.Render();

@@ -14,6 +14,7 @@
 #include "vtkSHTransferFilter.h"
 #include "rf_metrics.h"
 
+#include "rfReferenceScene.h"
 #include "rfTestRig.h"
 #include "rfTestScene.h"
 #include "rf_require.h"
@@ -46,34 +47,7 @@ namespace
 {
 const int kSize = 160;
 
-struct Scene
-{
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkRefractionPass> Pass;
-  vtkSmartPointer<vtkRenderWindow> Window;
-  Scene()
-  {
-    this->Renderer->SetPass(this->Pass);
-    this->Pass->SetEnvironmentModeToBuiltin();
-    this->Renderer->SetBackground(0.0, 0.0, 0.0);
-    this->Window = rftest::MakeWindow(this->Renderer, kSize, kSize);
-  }
-  void Look()
-  {
-    vtkCamera* camera = this->Renderer->GetActiveCamera();
-    camera->SetFocalPoint(0.0, 0.0, 0.0);
-    camera->SetPosition(0.0, 0.0, 8.0);
-    camera->SetViewUp(0.0, 1.0, 0.0);
-    camera->SetViewAngle(30.0);
-    this->Renderer->ResetCameraClippingRange();
-  }
-  vtkSmartPointer<vtkImageData> Render()
-  {
-    this->Look();
-    this->Window->Render();
-    return rftest::Grab(this->Window);
-  }
-};
+using Scene = rftest::ReferenceScene;
 
 // The glass mesh through the precomputation, as an actor.
 vtkSmartPointer<vtkActor> SHActor(vtkAlgorithmOutput* port, double ior, int order)
@@ -96,36 +70,12 @@ vtkSmartPointer<vtkActor> SHActor(vtkAlgorithmOutput* port, double ior, int orde
 
 double PSNR(vtkImageData* picture, vtkImageData* reference, const std::vector<unsigned char>& mask)
 {
-  vtkDataArray* colour = reference->GetPointData()->GetArray("Colour");
-  std::vector<float> truth(3 * mask.size());
-  for (size_t i = 0; i < mask.size(); ++i)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      truth[3 * i + c] = static_cast<float>(
-        std::min(1.0, std::max(0.0, colour->GetComponent(static_cast<vtkIdType>(i), c))));
-    }
-  }
-  const std::vector<float> measured = rftest::ToColour(picture);
-  double psnr = -1.0;
-  return rf_psnr(measured.data(), truth.data(), mask.size(), 3, mask.data(), &psnr) == RF_OK
-    ? psnr
-    : -1.0;
+  return rftest::PSNROnMask(picture, reference, mask);
 }
 
 vtkSmartPointer<vtkImageData> Trace(Scene& scene, int mode)
 {
-  scene.Look();
-  vtkNew<vtkRefractionReference> reference;
-  reference->SetMode(mode);
-  reference->SetEnvironmentMode(scene.Pass->GetEnvironmentMode());
-  if (!reference->Trace(scene.Renderer, kSize, kSize))
-  {
-    return nullptr;
-  }
-  auto output = vtkSmartPointer<vtkImageData>::New();
-  output->DeepCopy(reference->GetOutput());
-  return output;
+  return scene.Trace(mode);
 }
 
 vtkSmartPointer<vtkAlgorithm> Ball()

@@ -1,0 +1,102 @@
+// What the tests that hold the pass against the reference tracer share (layers, sh): a glass
+// scene over the built-in environment and a black background, seen from (0, 0, 8) toward the
+// origin with a 30-degree view angle; the reference traced of it as it stands; PSNR of a
+// picture against a reference's colours on a mask of pixels. Header-only: the reference
+// library is linked by the tests that include it.
+#ifndef rfReferenceScene_h
+#define rfReferenceScene_h
+
+#include "rfTestScene.h"
+#include "rf_metrics.h"
+#include "vtkRefractionPass.h"
+#include "vtkRefractionReference.h"
+
+#include <vtkCamera.h>
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace rftest
+{
+struct ReferenceScene
+{
+  int Size = 160;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRefractionPass> Pass;
+  vtkSmartPointer<vtkRenderWindow> Window;
+
+  explicit ReferenceScene(int size = 160)
+    : Size(size)
+  {
+    this->Renderer->SetPass(this->Pass);
+    this->Pass->SetEnvironmentModeToBuiltin();
+    this->Renderer->SetBackground(0.0, 0.0, 0.0);
+    this->Window = MakeWindow(this->Renderer, size, size);
+  }
+  void Look()
+  {
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetPosition(0.0, 0.0, 8.0);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    camera->SetViewAngle(30.0);
+    this->Renderer->ResetCameraClippingRange();
+  }
+  vtkSmartPointer<vtkImageData> Render()
+  {
+    this->Look();
+    this->Window->Render();
+    return Grab(this->Window);
+  }
+  /// The reference's picture of the scene as it stands (mode: vtkRefractionReference's).
+  vtkSmartPointer<vtkImageData> Trace(int mode)
+  {
+    this->Look();
+    vtkNew<vtkRefractionReference> reference;
+    reference->SetMode(mode);
+    reference->SetEnvironmentMode(this->Pass->GetEnvironmentMode());
+    if (!reference->Trace(this->Renderer, this->Size, this->Size))
+    {
+      return nullptr;
+    }
+    auto output = vtkSmartPointer<vtkImageData>::New();
+    output->DeepCopy(reference->GetOutput());
+    return output;
+  }
+};
+
+/// PSNR of a picture of the pass against a reference's colours (clamped to [0, 1], what an
+/// 8-bit window shows) on the pixels of `mask`; -1 where it cannot be measured.
+inline double PSNROnMask(
+  vtkImageData* picture, vtkImageData* reference, const std::vector<unsigned char>& mask)
+{
+  vtkDataArray* colour = reference ? reference->GetPointData()->GetArray("Colour") : nullptr;
+  if (!colour)
+  {
+    return -1.0;
+  }
+  std::vector<float> truth(3 * mask.size());
+  for (size_t i = 0; i < mask.size(); ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      truth[3 * i + c] = static_cast<float>(
+        std::min(1.0, std::max(0.0, colour->GetComponent(static_cast<vtkIdType>(i), c))));
+    }
+  }
+  const std::vector<float> measured = ToColour(picture);
+  double psnr = -1.0;
+  return rf_psnr(measured.data(), truth.data(), mask.size(), 3, mask.data(), &psnr) == RF_OK
+    ? psnr
+    : -1.0;
+}
+}
+
+#endif

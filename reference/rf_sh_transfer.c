@@ -1,13 +1,13 @@
 /* rf_sh_transfer.c: the SH method's per-vertex precomputation with Embree 3 (see the header). */
 #include "rf_sh_transfer.h"
 
+#include "rf_jobs.h"
 #include "rf_optics.h"
 #include "rf_sh.h"
 #include "rf_vec3.h"
 
 #include <embree3/rtcore.h>
 #include <math.h>
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -349,10 +349,9 @@ rf_status rf_sh_transfer(const float* positions, const float* normals, size_t ve
 {
   rf_sh_scene scene;
   rf_sh_job* jobs;
-  pthread_t* ids;
   rf_status status;
   int threads;
-  int started = 0;
+  int ran;
   int k;
   if (!options || !coefficients)
   {
@@ -372,11 +371,8 @@ rf_status rf_sh_transfer(const float* positions, const float* normals, size_t ve
   }
   threads = options->threads;
   jobs = (rf_sh_job*)calloc((size_t)threads, sizeof(rf_sh_job));
-  ids = (pthread_t*)calloc((size_t)threads, sizeof(pthread_t));
-  if (!jobs || !ids)
+  if (!jobs)
   {
-    free(jobs);
-    free(ids);
     rf_sh_scene_release(&scene);
     return RF_REF_ERR_OUT_OF_MEMORY;
   }
@@ -387,30 +383,12 @@ rf_status rf_sh_transfer(const float* positions, const float* normals, size_t ve
     jobs[k].coefficients = coefficients;
     jobs[k].first = (size_t)k;
     jobs[k].step = (size_t)threads;
-    jobs[k].report_progress = k == 0;
+    jobs[k].report_progress = k == 0; /* job 0 runs on the calling thread */
   }
-  /* Job 0 on the calling thread (it reports progress); a job that cannot start runs there. */
-  for (k = 1; k < threads; ++k)
-  {
-    if (pthread_create(&ids[k], NULL, rf_sh_job_run, &jobs[k]) != 0)
-    {
-      break;
-    }
-    started = k;
-  }
-  rf_sh_job_run(&jobs[0]);
-  for (k = started + 1; k < threads; ++k)
-  {
-    rf_sh_job_run(&jobs[k]);
-  }
-  for (k = 1; k <= started; ++k)
-  {
-    pthread_join(ids[k], NULL);
-  }
+  ran = rf_run_jobs(jobs, sizeof(rf_sh_job), threads, rf_sh_job_run);
   free(jobs);
-  free(ids);
   rf_sh_scene_release(&scene);
-  return RF_OK;
+  return ran ? RF_OK : RF_REF_ERR_OUT_OF_MEMORY;
 }
 
 rf_status rf_sh_transfer_path(const float* positions, const float* normals, size_t vertex_count,

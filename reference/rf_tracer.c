@@ -2,6 +2,7 @@
 #include "rf_tracer.h"
 
 #include "rf_environment.h"
+#include "rf_jobs.h"
 #include "rf_optics.h"
 #include "rf_vec3.h"
 
@@ -9,7 +10,6 @@
 
 #include <limits.h>
 #include <math.h>
-#include <pthread.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -849,19 +849,15 @@ static void* rf_worker_run(void* arg)
 static rf_status rf_run_workers(const rf_tracer* tr, int threads)
 {
   rf_worker* workers;
-  pthread_t* ids;
-  int started = 0;
+  int ran;
   int k;
   if (threads > tr->out->height)
   {
     threads = tr->out->height;
   }
   workers = (rf_worker*)calloc((size_t)threads, sizeof(rf_worker));
-  ids = (pthread_t*)calloc((size_t)threads, sizeof(pthread_t));
-  if (workers == NULL || ids == NULL)
+  if (workers == NULL)
   {
-    free(workers);
-    free(ids);
     return RF_REF_ERR_OUT_OF_MEMORY;
   }
   for (k = 0; k < threads; ++k)
@@ -871,27 +867,9 @@ static rf_status rf_run_workers(const rf_tracer* tr, int threads)
     workers[k].row_step = threads;
     workers[k].report_progress = k == 0;
   }
-  /* Worker 0 runs on the calling thread; a worker that cannot be started is run there too. */
-  for (k = 1; k < threads; ++k)
-  {
-    if (pthread_create(&ids[k], NULL, rf_worker_run, &workers[k]) != 0)
-    {
-      break;
-    }
-    started = k;
-  }
-  rf_worker_run(&workers[0]);
-  for (k = started + 1; k < threads; ++k)
-  {
-    rf_worker_run(&workers[k]);
-  }
-  for (k = 1; k <= started; ++k)
-  {
-    pthread_join(ids[k], NULL);
-  }
+  ran = rf_run_jobs(workers, sizeof(rf_worker), threads, rf_worker_run);
   free(workers);
-  free(ids);
-  return RF_OK;
+  return ran ? RF_OK : RF_REF_ERR_OUT_OF_MEMORY;
 }
 
 /* ------------------------------------------------------------------------------------------

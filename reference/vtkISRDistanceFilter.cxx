@@ -1,8 +1,8 @@
 #include "vtkISRDistanceFilter.h"
 
+#include "rfGlassMeshArrays.h"
 #include "rf_normal_distance.h"
 
-#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
@@ -11,11 +11,8 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataNormals.h"
 #include "vtkTimerLog.h"
-#include "vtkTriangleFilter.h"
 
-#include <vector>
 
 vtkStandardNewMacro(vtkISRDistanceFilter);
 
@@ -49,61 +46,15 @@ int vtkISRDistanceFilter::RequestData(
     return 1;
   }
 
-  vtkDataArray* normals = input->GetPointData()->GetNormals();
-  vtkNew<vtkPolyDataNormals> normalFilter;
-  if (!normals)
-  {
-    normalFilter->SetInputData(input);
-    normalFilter->SplittingOff();
-    normalFilter->ConsistencyOn();
-    normalFilter->ComputeCellNormalsOff();
-    normalFilter->Update();
-    normals = normalFilter->GetOutput()->GetPointData()->GetNormals();
-    output->GetPointData()->SetNormals(normals);
-  }
+  vtkDataArray* normals = rfGlassMeshNormals(input, output, false);
   // Coarse steps: normals, triangles and the copy come first; the ray casts that follow are
   // one call into the C core, which reports nothing while it runs.
   this->UpdateProgress(0.1);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(input);
-  triangles->PassLinesOff();
-  triangles->PassVertsOff();
-  triangles->Update();
-  vtkPolyData* mesh = triangles->GetOutput();
+  const rfGlassMeshArrays mesh = rfGetGlassMeshArrays(input, normals);
   this->UpdateProgress(0.2);
-
-  std::vector<float> positions(3 * pointCount);
-  std::vector<float> normalValues(3 * pointCount);
-  for (vtkIdType i = 0; i < pointCount; ++i)
-  {
-    double p[3];
-    double n[3];
-    mesh->GetPoint(i, p);
-    normals->GetTuple(i, n);
-    for (int k = 0; k < 3; ++k)
-    {
-      positions[3 * i + k] = static_cast<float>(p[k]);
-      normalValues[3 * i + k] = static_cast<float>(n[k]);
-    }
-  }
-  std::vector<unsigned> indices;
-  indices.reserve(3 * mesh->GetNumberOfPolys());
-  vtkCellArray* polys = mesh->GetPolys();
-  vtkIdType count = 0;
-  const vtkIdType* ids = nullptr;
-  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
-  {
-    if (count == 3)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        indices.push_back(static_cast<unsigned>(ids[k]));
-      }
-    }
-  }
   this->UpdateProgress(0.3);
-  const rf_status status = rf_normal_distances(positions.data(), normalValues.data(),
-    static_cast<size_t>(pointCount), indices.data(), indices.size() / 3,
+  const rf_status status = rf_normal_distances(mesh.Positions.data(), mesh.Normals.data(),
+    static_cast<size_t>(pointCount), mesh.Triangles.data(), mesh.Triangles.size() / 3,
     static_cast<float*>(distances->GetVoidPointer(0)));
   timer->StopTimer();
   this->LastComputeSeconds = timer->GetElapsedTime();

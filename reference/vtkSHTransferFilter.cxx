@@ -1,9 +1,9 @@
 #include "vtkSHTransferFilter.h"
 
+#include "rfGlassMeshArrays.h"
 #include "rf_sh.h"
 #include "rf_sh_transfer.h"
 
-#include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -14,9 +14,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataNormals.h"
 #include "vtkTimerLog.h"
-#include "vtkTriangleFilter.h"
 
 #include <vtksys/SystemTools.hxx>
 
@@ -169,54 +167,12 @@ int vtkSHTransferFilter::RequestData(
     return 1;
   }
 
-  vtkDataArray* normals = input->GetPointData()->GetNormals();
-  vtkNew<vtkPolyDataNormals> normalFilter;
-  if (!normals)
-  {
-    normalFilter->SetInputData(input);
-    normalFilter->SplittingOff();
-    normalFilter->ConsistencyOn();
-    normalFilter->AutoOrientNormalsOn(); // outward: the functions start with a refraction in
-    normalFilter->ComputeCellNormalsOff();
-    normalFilter->Update();
-    normals = normalFilter->GetOutput()->GetPointData()->GetNormals();
-    output->GetPointData()->SetNormals(normals);
-  }
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(input);
-  triangles->PassLinesOff();
-  triangles->PassVertsOff();
-  triangles->Update();
-  vtkPolyData* mesh = triangles->GetOutput();
-  std::vector<float> positions(3 * pointCount);
-  std::vector<float> normalValues(3 * pointCount);
-  for (vtkIdType i = 0; i < pointCount; ++i)
-  {
-    double p[3];
-    double n[3];
-    mesh->GetPoint(i, p);
-    normals->GetTuple(i, n);
-    for (int k = 0; k < 3; ++k)
-    {
-      positions[3 * i + k] = static_cast<float>(p[k]);
-      normalValues[3 * i + k] = static_cast<float>(n[k]);
-    }
-  }
-  std::vector<unsigned> indices;
-  indices.reserve(3 * mesh->GetNumberOfPolys());
-  vtkCellArray* polys = mesh->GetPolys();
-  vtkIdType cellSize = 0;
-  const vtkIdType* ids = nullptr;
-  for (polys->InitTraversal(); polys->GetNextCell(cellSize, ids);)
-  {
-    if (cellSize == 3)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        indices.push_back(static_cast<unsigned>(ids[k]));
-      }
-    }
-  }
+  // Outward: the functions start with a refraction in.
+  vtkDataArray* normals = rfGlassMeshNormals(input, output, true);
+  const rfGlassMeshArrays mesh = rfGetGlassMeshArrays(input, normals);
+  const std::vector<float>& positions = mesh.Positions;
+  const std::vector<float>& normalValues = mesh.Normals;
+  const std::vector<unsigned>& indices = mesh.Triangles;
   this->UpdateProgress(0.3);
 
   Hash hash;

@@ -66,16 +66,9 @@ RF_KERNEL rf_bool rfk_peel_on_image(rfk_camera camera, rf_float3 P, RF_OUT(rf_fl
   return t.x >= 0.0 && t.y >= 0.0 && t.x <= 1.0 && t.y <= 1.0;
 }
 
-/* How many of the first `count` layers at tc lie in front of depth (nearer the eye):
- * rf_layer_side, which the including side provides (the GLSL stage reads each layer's texture
- * once, by name, instead of through rf_layer_texel's run-time index). */
-RF_KERNEL int rfk_peel_side(rf_layer_stack layers, int count, rf_float2 tc, rf_float2 size,
-  rf_float depth)
-{
-  return rf_layer_side(layers, count, tc, size, depth);
-}
-
-/* The side of the ray point P + t T (-1 off the image). */
+/* The side of the ray point P + t T (-1 off the image): how many layers at its texel lie in
+ * front of it, by rf_layer_side, which the including side provides (the GLSL stage reads the
+ * depths packed four to a texel instead of each layer through rf_layer_texel). */
 RF_KERNEL int rfk_peel_side_at(rf_layer_stack layers, int count, rfk_camera camera, rf_float3 P,
   rf_float3 T, rf_float t)
 {
@@ -85,7 +78,7 @@ RF_KERNEL int rfk_peel_side_at(rf_layer_stack layers, int count, rfk_camera came
   {
     return -1;
   }
-  return rfk_peel_side(layers, count, tc, camera.viewportSize, -Q.z);
+  return rf_layer_side(layers, count, tc, camera.viewportSize, -Q.z);
 }
 
 /* The next crossing of the ray P + t T, 0 < t <= tEnd, with the layers, starting on side
@@ -152,7 +145,7 @@ RF_KERNEL int rfk_peel_next_crossing(rf_layer_stack layers, int count, rfk_camer
       rfk_peel_on_image(camera, nearQ, RF_ADDR(nearTC));
       rfk_peel_on_image(camera, farQ, RF_ADDR(farTC));
       rf_float2 pixels = camera.viewportSize;
-      int farSide = rfk_peel_side(layers, count, farTC, pixels, -farQ.z);
+      int farSide = rf_layer_side(layers, count, farTC, pixels, -farQ.z);
       /* Going deeper the ray passed behind layer farSide - 1; coming forward it passed in
        * front of layer farSide. */
       int crossedLayer = farSide > before ? farSide - 1 : farSide;

@@ -479,7 +479,7 @@ void vtkRefractionPass::RenderGlass(
     this->ThinSheetThickness);
   const bool dataColour = this->Materials->GetDataColour();
   wanted[vtkRefractionTargets::FRONT_COLOR] = dataColour;
-  wanted[vtkRefractionTargets::CORNER_COLOR] = this->AntiAliasing;
+  wanted[vtkRefractionTargets::GLASS_COLOR] = true;
   wanted[vtkRefractionTargets::DEBUG_0] = this->DebugOutput;
   wanted[vtkRefractionTargets::DEBUG_1] = this->DebugOutput;
   this->Targets->Update(renWin, this->Width, this->Height, wanted, reduction);

@@ -40,9 +40,18 @@ struct TargetSampler
   int Target;
   const char* Name;
 };
+// VTK's full-screen quad at the far plane (window depth 1): against the front capture's depth
+// buffer (cleared to 1) a GL_GREATER test passes exactly where the glass is.
+std::string FarPlaneQuadVertexShader()
+{
+  std::string source = vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader();
+  vtkShaderProgram::Substitute(
+    source, "gl_Position = ndCoordIn;", "gl_Position = vec4(ndCoordIn.xy, 1.0, 1.0);");
+  return source;
+}
+
 const TargetSampler kSamplers[] = {
   { vtkRefractionTargets::FRONT_SURFACE, "rfFrontSurface" },
-  { vtkRefractionTargets::FRONT_DEPTH, "rfFrontDepth" },
   { vtkRefractionTargets::FRONT_AUX, "rfFrontAux" },
   { vtkRefractionTargets::FRONT_COLOR, "rfFrontColour" },
   { vtkRefractionTargets::BACK_SURFACE, "rfBackSurface" },
@@ -71,7 +80,9 @@ void vtkRefractionShadeStage::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Shading program: " << (this->Shade ? "built" : "none") << "\n";
   os << indent << "Debug program: " << (this->Debug ? "built" : "none") << "\n";
-  os << indent << "Resolve program: " << (this->ResolveQuad ? "built" : "none") << "\n";
+  os << indent << "Composite program: " << (this->CompositeQuad ? "built" : "none") << "\n";
+  os << indent << "Anti-aliasing composite program: " << (this->CornerCompositeQuad ? "built" : "none")
+     << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -149,8 +160,8 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
   vtkShaderProgram::Substitute(source, "//RF::Method", method->GetShaderSource());
   // VTK's shader cache finds a program it built before by its source.
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  program.Quad.reset(new vtkOpenGLQuadHelper(renWin,
-    vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str(), ""));
+  program.Quad.reset(
+    new vtkOpenGLQuadHelper(renWin, FarPlaneQuadVertexShader().c_str(), source.c_str(), ""));
   program.Defines = defines.str();
   if (!program.Quad->Program || !program.Quad->Program->GetCompiled())
   {
@@ -277,6 +288,103 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
   const std::vector<float>& materialIOR, const std::vector<float>& materialSheet)
 {
   vtkOpenGLState* ostate = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+  vtkTextureObject* glassColour = targets->Get(vtkRefractionTargets::GLASS_COLOR);
+  vtkTextureObject* frontDepth = targets->Get(vtkRefractionTargets::FRONT_DEPTH);
+  if (!glassColour || !frontDepth)
+  {
+    return;
+  }
+  // The refraction into the glass colour target. Without anti-aliasing the front capture's
+  // depth buffer is attached and the quad lies at the far plane: GL_GREATER passes only where
+  // the glass is, and the test runs before the program (which writes no depth), so the blocks
+  // without glass cost nothing. The pixels' corners (anti-aliasing) lie between texels and
+  // are all shaded.
+  const bool corners = settings->GetAntiAliasing();
+  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
+  fbo->SaveCurrentBindingsAndBuffers();
+  fbo->Bind();
+  fbo->AddColorAttachment(0, glassColour);
+  if (corners)
+  {
+    fbo->RemoveDepthAttachment();
+  }
+  else
+  {
+    fbo->AddDepthAttachment(frontDepth);
+  }
+  fbo->ActivateDrawBuffers(1);
+  {
+    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+    const int width = static_cast<int>(glassColour->GetWidth());
+    const int height = static_cast<int>(glassColour->GetHeight());
+    ostate->vtkglViewport(0, 0, width, height);
+    ostate->vtkglScissor(0, 0, width, height);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglDisable(GL_BLEND);
+    if (corners)
+    {
+      ostate->vtkglDisable(GL_DEPTH_TEST);
+    }
+    else
+    {
+      ostate->vtkglEnable(GL_DEPTH_TEST);
+      ostate->vtkglDepthFunc(GL_GREATER);
+      ostate->vtkglDepthMask(GL_FALSE);
+    }
+    this->Draw(ren, method, settings, targets, frame, materialIOR, materialSheet, false);
+  }
+  fbo->RemoveDepthAttachment();
+  fbo->UnBind();
+  fbo->RestorePreviousBindingsAndBuffers();
+  this->Composite(ren, targets, corners);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionShadeStage::Composite(
+  vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, bool corners)
+{
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad = corners ? this->CornerCompositeQuad : this->CompositeQuad;
+  if (!quad)
+  {
+    std::string source = rfCompositeFSSource;
+    if (corners)
+    {
+      vtkShaderProgram::Substitute(
+        source, "in vec2 texCoord;", "in vec2 texCoord;\n#define RF_CORNER_SAMPLES\n");
+    }
+    quad.reset(new vtkOpenGLQuadHelper(renWin,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str(), ""));
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  }
+  vtkShaderProgram* program = quad->Program;
+  if (!program || !program->GetCompiled())
+  {
+    vtkErrorMacro("Could not build the glass composite shader; the glass is not drawn.");
+    return;
+  }
+  vtkTextureObject* textures[3] = { targets->Get(vtkRefractionTargets::FRONT_SURFACE),
+    targets->Get(vtkRefractionTargets::FRONT_DEPTH),
+    targets->Get(vtkRefractionTargets::GLASS_COLOR) };
+  const char* names[3] = { "rfFrontSurface", "rfFrontDepth", "rfGlassColour" };
+  for (int i = 0; i < 3; ++i)
+  {
+    textures[i]->Activate();
+    program->SetUniformi(names[i], textures[i]->GetTextureUnit());
+  }
+  const float size[2] = { static_cast<float>(textures[2]->GetWidth()),
+    static_cast<float>(textures[2]->GetHeight()) };
+  program->SetUniform2f("rfSize", size);
   // The glass is opaque: its colour replaces the scene's (with anti-aliasing, blends over it
   // at the silhouette), its depth goes into the scene's depth buffer, and the depth test
   // keeps the glass behind opaque actors hidden.
@@ -286,83 +394,22 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
   vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
   vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-  vtkTextureObject* corners = targets->Get(vtkRefractionTargets::CORNER_COLOR);
-  if (!settings->GetAntiAliasing() || !corners)
-  {
-    ostate->vtkglEnable(GL_DEPTH_TEST);
-    ostate->vtkglDepthFunc(GL_LEQUAL);
-    ostate->vtkglDepthMask(GL_TRUE);
-    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    ostate->vtkglDisable(GL_BLEND);
-    this->Draw(ren, method, settings, targets, frame, materialIOR, materialSheet, false);
-    return;
-  }
-  // Anti-aliasing: the refraction at every pixel corner into the corner target, then each
-  // pixel of the glass averages its corners over the scene.
-  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
-  fbo->SaveCurrentBindingsAndBuffers();
-  fbo->Bind();
-  fbo->AddColorAttachment(0, corners);
-  fbo->RemoveDepthAttachment();
-  fbo->ActivateDrawBuffers(1);
-  {
-    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-    ostate->vtkglViewport(
-      0, 0, static_cast<int>(corners->GetWidth()), static_cast<int>(corners->GetHeight()));
-    ostate->vtkglScissor(
-      0, 0, static_cast<int>(corners->GetWidth()), static_cast<int>(corners->GetHeight()));
-    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    ostate->vtkglDisable(GL_BLEND);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
-    this->Draw(ren, method, settings, targets, frame, materialIOR, materialSheet, false);
-  }
-  fbo->UnBind();
-  fbo->RestorePreviousBindingsAndBuffers();
-  this->Resolve(ren, targets);
-}
-
-//------------------------------------------------------------------------------
-void vtkRefractionShadeStage::Resolve(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets)
-{
-  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  vtkOpenGLState* ostate = renWin->GetState();
-  if (!this->ResolveQuad)
-  {
-    this->ResolveQuad.reset(new vtkOpenGLQuadHelper(renWin,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), rfResolveFSSource, ""));
-  }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->ResolveQuad->Program);
-  }
-  vtkShaderProgram* program = this->ResolveQuad->Program;
-  if (!program || !program->GetCompiled())
-  {
-    vtkErrorMacro("Could not build the anti-aliasing resolve shader; the glass is not drawn.");
-    return;
-  }
-  vtkTextureObject* textures[3] = { targets->Get(vtkRefractionTargets::FRONT_SURFACE),
-    targets->Get(vtkRefractionTargets::FRONT_DEPTH),
-    targets->Get(vtkRefractionTargets::CORNER_COLOR) };
-  const char* names[3] = { "rfFrontSurface", "rfFrontDepth", "rfCorners" };
-  for (int i = 0; i < 3; ++i)
-  {
-    textures[i]->Activate();
-    program->SetUniformi(names[i], textures[i]->GetTextureUnit());
-  }
-  const float size[2] = { static_cast<float>(textures[2]->GetWidth()),
-    static_cast<float>(textures[2]->GetHeight()) };
-  program->SetUniform2f("rfSize", size);
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_LEQUAL);
   ostate->vtkglDepthMask(GL_TRUE);
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  // The share of the pixel's corners on the glass (alpha) over what is behind it.
-  ostate->vtkglEnable(GL_BLEND);
-  ostate->vtkglBlendFuncSeparate(
-    GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  this->ResolveQuad->Render();
+  if (corners)
+  {
+    // The share of the pixel's corners on the glass (alpha) over what is behind it.
+    ostate->vtkglEnable(GL_BLEND);
+    ostate->vtkglBlendFuncSeparate(
+      GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  else
+  {
+    ostate->vtkglDisable(GL_BLEND);
+  }
+  quad->Render();
   for (vtkTextureObject* texture : textures)
   {
     texture->Deactivate();
@@ -458,9 +505,12 @@ void vtkRefractionShadeStage::ReleaseGraphicsResources(vtkWindow* w)
     }
     program->reset();
   }
-  if (this->ResolveQuad)
+  for (std::unique_ptr<vtkOpenGLQuadHelper>* quad : { &this->CompositeQuad, &this->CornerCompositeQuad })
   {
-    this->ResolveQuad->ReleaseGraphicsResources(w);
-    this->ResolveQuad.reset();
+    if (*quad)
+    {
+      (*quad)->ReleaseGraphicsResources(w);
+    }
+    quad->reset();
   }
 }

@@ -4,11 +4,12 @@
  *
  * Builds shaders/rfShadeFS.glsl with the method's defines and GLSL, binds the render targets
  * the method reads (by sampler name), the environment and the camera, and draws a full-screen
- * quad (vtkOpenGLQuadHelper) into the framebuffer bound now, writing the glass's colour and
- * depth; or, for the debug output, P2/T2/thickness/flags into two float targets read back as
- * a vtkImageData. With anti-aliasing it shades the pixels' corners into the corner target
- * and a resolve quad (shaders/rfResolveFS.glsl) averages them into the framebuffer. GL state
- * goes through vtkOpenGLState and is restored afterwards.
+ * quad (vtkOpenGLQuadHelper) into the glass colour target, culled by the front capture's depth
+ * buffer to the pixels of the glass; a composite quad (shaders/rfCompositeFS.glsl) then puts
+ * that colour and the glass's depth into the framebuffer bound before. With anti-aliasing the
+ * pixels' corners are shaded instead and the composite averages each pixel's four. For the
+ * debug output it writes P2/T2/thickness/flags into two float targets read back as a
+ * vtkImageData. GL state goes through vtkOpenGLState and is restored afterwards.
  */
 #ifndef vtkRefractionShadeStage_h
 #define vtkRefractionShadeStage_h
@@ -66,7 +67,7 @@ public:
   bool Prepare(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, vtkRefractionPass* settings,
     const Frame& frame, bool debug);
 
-  /// Shades the glass into the framebuffer bound now (the renderer's viewport).
+  /// Shades the glass and puts it into the framebuffer bound now (the renderer's viewport).
   void Render(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, vtkRefractionPass* settings,
     vtkRefractionTargets* targets, const Frame& frame, const std::vector<float>& materialIOR, const std::vector<float>& materialSheet);
 
@@ -91,11 +92,13 @@ private:
     vtkRefractionTargets* targets, const Frame& frame, const std::vector<float>& materialIOR,
     const std::vector<float>& materialSheet, bool debug);
 
-  // Anti-aliasing: each pixel averages the corner target over the scene.
-  void Resolve(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets);
+  // The glass colour target into the framebuffer bound now, with the glass's depth; with
+  // anti-aliasing (corners) each pixel averages its four corners over the scene.
+  void Composite(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, bool corners);
   std::unique_ptr<Program> Shade;
   std::unique_ptr<Program> Debug;
-  std::unique_ptr<vtkOpenGLQuadHelper> ResolveQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> CornerCompositeQuad;
 };
 
 #endif

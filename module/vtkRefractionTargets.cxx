@@ -34,7 +34,7 @@ const TargetFormat kFormats[vtkRefractionTargets::TARGET_COUNT] = {
   { "back z-buffer", 0, 0, 0, vtkTextureObject::Nearest },
   { "scene colour", 4, GL_RGBA8, GL_RGBA, vtkTextureObject::Nearest },
   { "scene depth", 0, 0, 0, vtkTextureObject::Nearest },
-  { "corner colour", 4, GL_RGBA16F, GL_RGBA, vtkTextureObject::Nearest },
+  { "glass colour", 4, GL_RGBA16F, GL_RGBA, vtkTextureObject::Nearest },
   { "peeled layer 1", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "peeled layer 2", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "peeled layer 3", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },

@@ -39,8 +39,9 @@ public:
     BACK_Z,            ///< DEPTH32F: the depth test of the back capture
     SCENE_COLOR,       ///< RGBA8: the opaque scene (and SSP's refraction mask in alpha)
     SCENE_DEPTH,       ///< DEPTH32F: the opaque scene's depth (window coordinates)
-    CORNER_COLOR,      ///< RGBA16F: anti-aliasing, the glass's colour at each pixel's lower-left
-                       ///< corner, alpha 1 where the corner lies on the glass
+    GLASS_COLOR,       ///< RGBA16F: the shaded glass, which the composite puts into the scene:
+                       ///< at each pixel, or with anti-aliasing at each pixel's lower-left
+                       ///< corner (alpha 1 where the corner lies on the glass)
     PEEL_1,            ///< RGBA32F: PEEL's depth-peeled layers 1 .. 7 (layer 0 is
     PEEL_2,            ///< FRONT_SURFACE): octahedral normal toward the viewer, -z_view,
     PEEL_3,            ///< +-(material + 1), positive where the outward side faces the viewer

@@ -2,16 +2,17 @@
 // The refraction, once per pixel of the glass (deferred shading): a full-screen stage that
 // reads the glass G-buffer the geometry stage wrote (rfGeometryFS.glsl), refracts the view ray
 // at the front surface, asks the method for the exit point and normal (rfFindExit, from
-// rfMethod<NAME>.glsl) and refracts again into the environment. Writes the glass's colour and
-// its depth, so the opaque scene's depth test keeps hidden glass hidden.
+// rfMethod<NAME>.glsl) and refracts again into the environment. Writes the glass's colour into
+// the glass colour target; the composite (rfCompositeFS.glsl) puts it into the scene with the
+// glass's depth. No depth is written here: the front capture's depth buffer rejects the blocks
+// without glass before this program runs (vtkRefractionShadeStage::Render).
 // Defines set by the pass: RF_METHOD_{SIR,DIR,ISR,SSP,PEEL,SH}, RF_TIR_CLAMP, RF_FRESNEL,
 // RF_ENV_CUBEMAP or RF_ENV_BACKGROUND (else the built-in environment), RF_SCENE_REFRACTION,
 // RF_SCENE_STEPS, RF_TINT, RF_DISPERSION, RF_MAX_MATERIALS, RF_DEBUG_OUTPUT, RF_CORNER_SAMPLES
-// (anti-aliasing: the pixels' corners into the corner target instead of the pixels) and the
+// (anti-aliasing: the pixels' corners instead of the pixels) and the
 // method's own.
 in vec2 texCoord;
 uniform sampler2D rfFrontSurface;
-uniform sampler2D rfFrontDepth;
 #ifdef RF_TINT
 uniform sampler2D rfFrontColour;
 uniform float rfAbsorptionDistance;
@@ -347,8 +348,8 @@ vec3 rfShadeColour(vec2 tc, vec3 N1, float depth, int material)
 
 #ifdef RF_CORNER_SAMPLES
 // Anti-aliasing (vtkRefractionPass::SetAntiAliasing): this program shades the lower-left
-// corner of each pixel, where four texels of the G-buffer meet, into the corner target; the
-// resolve stage (rfResolveFS.glsl) averages each pixel's four corners. The corner lies on the
+// corner of each pixel, where four texels of the G-buffer meet, into the glass colour target;
+// the composite (rfCompositeFS.glsl) averages each pixel's four corners. The corner lies on the
 // glass where at least two of its texels hold the glass of the nearest of them; its depth and
 // normal are theirs, averaged.
 vec4 rfCornerSample()
@@ -409,7 +410,6 @@ void main()
   {
     discard; // no glass here
   }
-  gl_FragDepth = texelFetch(rfFrontDepth, rfPixel, 0).r;
   int rfMaterial = clamp(int(rfFront.w + 0.5) - 1, 0, RF_MAX_MATERIALS - 1);
   vec3 rfN1 = rf_oct_decode(rfFront.xy);
 #ifdef RF_DEBUG_OUTPUT

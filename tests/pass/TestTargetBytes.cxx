@@ -1,7 +1,8 @@
 // Each method allocates exactly the render targets it reads, and the pass's byte count
 // (GetTextureBytes, what the benchmark's memory column reports) is what the driver allocated.
 // The expected bytes per pixel are written out here from the targets' formats (see
-// vtkRefractionTargets.h): front G-buffer RGBA32F + DEPTH32F = 20, and the data's colour RGBA8
+// vtkRefractionTargets.h): front G-buffer RGBA32F + DEPTH32F = 20 and the shaded glass colour
+// RGBA16F = 8, which every method writes and the composite reads, and the data's colour RGBA8
 // = 4 for the methods that tint (all but SSP) when the glass has a colour (it is light blue
 // here; white glass needs none); back capture RGBA32F normal and depth + DEPTH32F
 // = 20; ISR's d_N R32F = 4; SSP's scene copy RGBA8 = 4; DIR's
@@ -73,8 +74,8 @@ int main()
     unsigned long long Expected;
     int Layers; // PEEL's K (0: the default, 4)
   };
-  const unsigned long long front = 24 * pixels;
-  const unsigned long long frontUntinted = 20 * pixels;
+  const unsigned long long front = 32 * pixels;
+  const unsigned long long frontUntinted = 28 * pixels;
   const unsigned long long back = 20 * pixels;
   const unsigned long long reduction = 8 * ReductionTexels(width, height);
   const Case cases[] = {

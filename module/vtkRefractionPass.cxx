@@ -553,6 +553,17 @@ void vtkRefractionPass::RenderGlass(
     this->GeometryStage->DrawBack(ren, this->Targets);
     this->StopTimer(TIMED_BACK_CAPTURE);
   }
+  this->StartTimer(TIMED_FRONT);
+  this->GeometryStage->DrawFront(ren, this->Targets);
+  if (method->NeedsSceneColor())
+  {
+    this->GeometryStage->DrawMask(ren);
+    this->CaptureScene(ren, false);
+  }
+  this->StopTimer(TIMED_FRONT);
+  this->NumberOfRenderedProps += this->GeometryStage->GetNumberOfDrawnProps();
+  // After the front capture, which does not read it: llvmpipe rasterizes the back capture
+  // while it bins the front one, and waits for the back capture only here.
   if (method->NeedsDepthRange())
   {
     this->StartTimer(TIMED_DEPTH_RANGE);
@@ -566,15 +577,6 @@ void vtkRefractionPass::RenderGlass(
     }
     this->StopTimer(TIMED_DEPTH_RANGE);
   }
-  this->StartTimer(TIMED_FRONT);
-  this->GeometryStage->DrawFront(ren, this->Targets);
-  if (method->NeedsSceneColor())
-  {
-    this->GeometryStage->DrawMask(ren);
-    this->CaptureScene(ren, false);
-  }
-  this->StopTimer(TIMED_FRONT);
-  this->NumberOfRenderedProps += this->GeometryStage->GetNumberOfDrawnProps();
   if (peelLayers > 1)
   {
     vtkRefractionDepthRange::ComputeBounds(ren, glass, this->BoundsDepthRange);

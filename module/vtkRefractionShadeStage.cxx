@@ -373,17 +373,16 @@ void vtkRefractionShadeStage::Composite(
     vtkErrorMacro("Could not build the glass composite shader; the glass is not drawn.");
     return;
   }
-  vtkTextureObject* textures[3] = { targets->Get(vtkRefractionTargets::FRONT_SURFACE),
-    targets->Get(vtkRefractionTargets::FRONT_DEPTH),
+  vtkTextureObject* textures[2] = { targets->Get(vtkRefractionTargets::FRONT_DEPTH),
     targets->Get(vtkRefractionTargets::GLASS_COLOR) };
-  const char* names[3] = { "rfFrontSurface", "rfFrontDepth", "rfGlassColour" };
-  for (int i = 0; i < 3; ++i)
+  const char* names[2] = { "rfFrontDepth", "rfGlassColour" };
+  for (int i = 0; i < 2; ++i)
   {
     textures[i]->Activate();
     program->SetUniformi(names[i], textures[i]->GetTextureUnit());
   }
-  const float size[2] = { static_cast<float>(textures[2]->GetWidth()),
-    static_cast<float>(textures[2]->GetHeight()) };
+  const float size[2] = { static_cast<float>(textures[1]->GetWidth()),
+    static_cast<float>(textures[1]->GetHeight()) };
   program->SetUniform2f("rfSize", size);
   // The glass is opaque: its colour replaces the scene's (with anti-aliasing, blends over it
   // at the silhouette), its depth goes into the scene's depth buffer, and the depth test

@@ -11,7 +11,6 @@
 // glass; that share is the alpha that blends it over the scene. A pixel whose centre is glass
 // but none of its corners (a sliver thinner than a pixel) shows the scene.
 in vec2 texCoord;
-uniform sampler2D rfFrontSurface;
 uniform sampler2D rfFrontDepth;
 uniform sampler2D rfGlassColour;
 uniform vec2 rfSize;
@@ -19,7 +18,9 @@ uniform vec2 rfSize;
 void main()
 {
   ivec2 pixel = ivec2(texCoord * rfSize);
-  if (!(texelFetch(rfFrontSurface, pixel, 0).w > 0.5))
+  // The front capture's depth buffer is cleared to 1: below it, the glass.
+  float depth = texelFetch(rfFrontDepth, pixel, 0).r;
+  if (!(depth < 1.0))
   {
     discard;
   }
@@ -37,6 +38,6 @@ void main()
 #else
   vec4 colour = vec4(texelFetch(rfGlassColour, pixel, 0).rgb, 1.0);
 #endif
-  gl_FragDepth = texelFetch(rfFrontDepth, pixel, 0).r;
+  gl_FragDepth = depth;
   gl_FragData[0] = colour;
 }

@@ -94,6 +94,7 @@ struct Options
   std::string Out;
   std::vector<int> Sizes{ 256, 512, 1024 };
   std::vector<std::string> Meshes{ "sphere", "torus", "isosurface", "bunny" };
+  std::vector<std::string> Methods; // empty: every row of the preset
   int Frames = 30;
   int Repeats = 3;
   int Seed = 1;
@@ -203,7 +204,7 @@ bool ParseInt(const std::string& text, int lo, int hi, int& value)
 
 bool Parse(int argc, char* argv[], Options& o)
 {
-  std::string sizes, meshes, frames, repeats, seed, supersample;
+  std::string sizes, meshes, methods, frames, repeats, seed, supersample;
   bool help = false;
   using Args = vtksys::CommandLineArguments;
   Args args;
@@ -217,6 +218,9 @@ bool Parse(int argc, char* argv[], Options& o)
     "(the sphere in front of a checkerboard and axes over a gradient background: DIR 5 with "
     "the scene's refraction on and off) and nested (nested contours: the isosurface's blobs, "
     "IOR 1.5, holding the contour of a higher value as a second glass actor of IOR 1.9).");
+  args.AddArgument("--methods", Args::SPACE_ARGUMENT, &methods,
+    "Keep only the rows of these methods, comma-separated: DIR, SIR, ISR, SSP, PEEL, SH, "
+    "none (default: every row of the preset), e.g. --quick --methods DIR.");
   args.AddArgument("--frames", Args::SPACE_ARGUMENT, &frames,
     "Timed frames per repeat of a row, after 5 warm-up frames (default 30).");
   args.AddArgument("--repeats", Args::SPACE_ARGUMENT, &repeats,
@@ -291,6 +295,21 @@ bool Parse(int argc, char* argv[], Options& o)
         return false;
       }
     }
+  }
+  for (const auto& name : Split(methods))
+  {
+    std::string upper = name;
+    for (char& c : upper)
+      c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (upper == "NONE")
+      upper = "none";
+    if (upper != "DIR" && upper != "SIR" && upper != "ISR" && upper != "SSP" && upper != "PEEL" &&
+      upper != "SH" && upper != "none")
+    {
+      std::fprintf(stderr, "--methods: unknown method '%s'\n", name.c_str());
+      return false;
+    }
+    o.Methods.push_back(upper);
   }
   if ((!frames.empty() && !ParseInt(frames, 1, 10000, o.Frames)) ||
     (!repeats.empty() && !ParseInt(repeats, 3, 100, o.Repeats)) ||
@@ -1267,7 +1286,7 @@ vtkSmartPointer<vtkTexture> MakeEnvironment(
   return cube;
 }
 
-std::vector<Setting> Settings(const Options& o)
+std::vector<Setting> PresetSettings(const Options& o)
 {
   std::vector<Setting> settings;
   Setting antiAliased{ "DIR", 5 };
@@ -1320,6 +1339,21 @@ std::vector<Setting> Settings(const Options& o)
     for (int tirBounces : { 0, 2, 4 })
       settings.push_back(peel(layers, tirBounces));
   settings.push_back({ "SH", 0 });
+  return settings;
+}
+
+// The preset's rows, less the methods --methods leaves out.
+std::vector<Setting> Settings(const Options& o)
+{
+  std::vector<Setting> settings;
+  for (const Setting& setting : PresetSettings(o))
+  {
+    if (o.Methods.empty() ||
+      std::find(o.Methods.begin(), o.Methods.end(), setting.Method) != o.Methods.end())
+    {
+      settings.push_back(setting);
+    }
+  }
   return settings;
 }
 
@@ -1542,6 +1576,12 @@ int main(int argc, char* argv[])
   };
 
   const std::vector<Setting> settings = Settings(options);
+  if (settings.empty() &&
+    std::find(options.Meshes.begin(), options.Meshes.end(), "scene") == options.Meshes.end())
+  {
+    std::fprintf(stderr, "--methods leaves no rows of the preset to run\n");
+    return 2;
+  }
   std::vector<Scene> scenes;
   for (const std::string& name : options.Meshes)
   {

@@ -479,7 +479,8 @@ void vtkRefractionPass::RenderGlass(
     this->ThinSheetThickness);
   const bool dataColour = this->Materials->GetDataColour();
   wanted[vtkRefractionTargets::FRONT_COLOR] = dataColour;
-  wanted[vtkRefractionTargets::GLASS_COLOR] = true;
+  wanted[vtkRefractionTargets::GLASS_COLOR] = true; // the shading stage's output
+  wanted[vtkRefractionTargets::CORNER_Z] = this->AntiAliasing;
   wanted[vtkRefractionTargets::DEBUG_0] = this->DebugOutput;
   wanted[vtkRefractionTargets::DEBUG_1] = this->DebugOutput;
   this->Targets->Update(renWin, this->Width, this->Height, wanted, reduction);

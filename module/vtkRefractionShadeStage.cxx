@@ -83,6 +83,7 @@ void vtkRefractionShadeStage::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Composite program: " << (this->CompositeQuad ? "built" : "none") << "\n";
   os << indent << "Anti-aliasing composite program: " << (this->CornerCompositeQuad ? "built" : "none")
      << "\n";
+  os << indent << "Corner depth program: " << (this->CornerDepthQuad ? "built" : "none") << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -288,30 +289,25 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
   const std::vector<float>& materialIOR, const std::vector<float>& materialSheet)
 {
   vtkOpenGLState* ostate = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+  const bool corners = settings->GetAntiAliasing();
   vtkTextureObject* glassColour = targets->Get(vtkRefractionTargets::GLASS_COLOR);
   vtkTextureObject* frontDepth = targets->Get(vtkRefractionTargets::FRONT_DEPTH);
-  if (!glassColour || !frontDepth)
+  vtkTextureObject* cornerDepth = targets->Get(vtkRefractionTargets::CORNER_Z);
+  if (!glassColour || !frontDepth || (corners && !cornerDepth))
   {
     return;
   }
-  // The refraction into the glass colour target. Without anti-aliasing the front capture's
-  // depth buffer is attached and the quad lies at the far plane: GL_GREATER passes only where
-  // the glass is, and the test runs before the program (which writes no depth), so the blocks
-  // without glass cost nothing. The pixels' corners (anti-aliasing) lie between texels and
-  // are all shaded.
-  const bool corners = settings->GetAntiAliasing();
+  // The refraction into the glass colour target, with a depth buffer attached that holds 1
+  // where there is nothing to shade and the quad at the far plane: GL_GREATER passes only
+  // where there is, and the test runs before the program (which writes no depth), so the
+  // blocks without glass cost nothing. Pixels: the front capture's depth buffer. Corners
+  // (anti-aliasing): a corner lies between four pixels and is shaded when any of them is
+  // glass, so the corner depth buffer takes the nearest of the four first.
   vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
   fbo->SaveCurrentBindingsAndBuffers();
   fbo->Bind();
   fbo->AddColorAttachment(0, glassColour);
-  if (corners)
-  {
-    fbo->RemoveDepthAttachment();
-  }
-  else
-  {
-    fbo->AddDepthAttachment(frontDepth);
-  }
+  fbo->AddDepthAttachment(corners ? cornerDepth : frontDepth);
   fbo->ActivateDrawBuffers(1);
   {
     vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
@@ -325,24 +321,60 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
     const int height = static_cast<int>(glassColour->GetHeight());
     ostate->vtkglViewport(0, 0, width, height);
     ostate->vtkglScissor(0, 0, width, height);
-    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
     if (corners)
     {
-      ostate->vtkglDisable(GL_DEPTH_TEST);
+      this->DrawCornerDepth(ren, frontDepth);
     }
-    else
-    {
-      ostate->vtkglEnable(GL_DEPTH_TEST);
-      ostate->vtkglDepthFunc(GL_GREATER);
-      ostate->vtkglDepthMask(GL_FALSE);
-    }
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglDepthFunc(GL_GREATER);
+    ostate->vtkglDepthMask(GL_FALSE);
     this->Draw(ren, method, settings, targets, frame, materialIOR, materialSheet, false);
   }
   fbo->RemoveDepthAttachment();
   fbo->UnBind();
   fbo->RestorePreviousBindingsAndBuffers();
   this->Composite(ren, targets, corners);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionShadeStage::DrawCornerDepth(vtkOpenGLRenderer* ren, vtkTextureObject* frontDepth)
+{
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  if (!this->CornerDepthQuad)
+  {
+    this->CornerDepthQuad.reset(new vtkOpenGLQuadHelper(renWin,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), rfCornerDepthFSSource,
+      ""));
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(this->CornerDepthQuad->Program);
+  }
+  vtkShaderProgram* program = this->CornerDepthQuad->Program;
+  if (!program || !program->GetCompiled())
+  {
+    // Nothing culled: the depth buffer of every corner at 0, so the shading test passes.
+    vtkErrorMacro("Could not build the corner depth shader; every corner is shaded.");
+    double clearDepth = 1.0;
+    ostate->vtkglGetDoublev(GL_DEPTH_CLEAR_VALUE, &clearDepth);
+    ostate->vtkglClearDepth(0.0);
+    ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
+    ostate->vtkglClearDepth(clearDepth);
+    return;
+  }
+  frontDepth->Activate();
+  program->SetUniformi("rfFrontDepth", frontDepth->GetTextureUnit());
+  const float size[2] = { static_cast<float>(frontDepth->GetWidth()),
+    static_cast<float>(frontDepth->GetHeight()) };
+  program->SetUniform2f("rfSize", size);
+  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  ostate->vtkglDepthFunc(GL_ALWAYS);
+  ostate->vtkglDepthMask(GL_TRUE);
+  this->CornerDepthQuad->Render();
+  frontDepth->Deactivate();
 }
 
 //------------------------------------------------------------------------------
@@ -504,7 +536,8 @@ void vtkRefractionShadeStage::ReleaseGraphicsResources(vtkWindow* w)
     }
     program->reset();
   }
-  for (std::unique_ptr<vtkOpenGLQuadHelper>* quad : { &this->CompositeQuad, &this->CornerCompositeQuad })
+  for (std::unique_ptr<vtkOpenGLQuadHelper>* quad :
+    { &this->CompositeQuad, &this->CornerCompositeQuad, &this->CornerDepthQuad })
   {
     if (*quad)
     {

@@ -30,6 +30,7 @@ class vtkRefractionPass;
 class vtkRefractionTargets;
 class vtkShaderProgram;
 class vtkTexture;
+class vtkTextureObject;
 class vtkWindow;
 
 class vtkRefractionShadeStage : public vtkObject
@@ -95,10 +96,14 @@ private:
   // The glass colour target into the framebuffer bound now, with the glass's depth; with
   // anti-aliasing (corners) each pixel averages its four corners over the scene.
   void Composite(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, bool corners);
+  // Anti-aliasing: into the depth buffer attached now, the nearest front depth of the four
+  // pixels that meet at each corner (shaders/rfCornerDepthFS.glsl).
+  void DrawCornerDepth(vtkOpenGLRenderer* ren, vtkTextureObject* frontDepth);
   std::unique_ptr<Program> Shade;
   std::unique_ptr<Program> Debug;
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CornerCompositeQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> CornerDepthQuad;
 };
 
 #endif

@@ -8,7 +8,8 @@
 // = 20; ISR's d_N R32F = 4; SSP's scene copy RGBA8 = 4; DIR's
 // reduction chain RG32F = 8 per texel of each halved level; PEEL's K - 1 peeled layers RGBA32F
 // and their DEPTH32F = 16 (K - 1) + 4, and the layers' depths packed into RGBA32F, one for
-// K <= 4, two above; the debug output 2 x RGBA32F.
+// K <= 4, two above; anti-aliasing's corner depth buffer DEPTH32F = 4; the debug output
+// 2 x RGBA32F.
 #include "vtkRefractionPass.h"
 
 #include "rfTestWindow.h"
@@ -73,6 +74,7 @@ int main()
     const char* Name;
     unsigned long long Expected;
     int Layers; // PEEL's K (0: the default, 4)
+    bool AntiAliasing;
   };
   const unsigned long long front = 32 * pixels;
   const unsigned long long frontUntinted = 28 * pixels;
@@ -96,6 +98,8 @@ int main()
       front + 36 * pixels, 2 },
     { vtkRefractionPass::DIR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, true, "DIR, debug",
       front + back + reduction + 32 * pixels },
+    { vtkRefractionPass::DIR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "DIR, AA",
+      front + back + reduction + 4 * pixels, 0, true },
     // Back to the cheapest: what SIR no longer needs is released.
     { vtkRefractionPass::SIR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "SIR again", front },
     { vtkRefractionPass::SIR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "SIR, no tint",
@@ -108,6 +112,7 @@ int main()
     pass->SetPeelLayers(c.Layers > 0 ? c.Layers : 4);
     pass->SetDepthRangeMode(c.DepthRange);
     pass->SetDebugOutput(c.Debug);
+    pass->SetAntiAliasing(c.AntiAliasing);
     window->Render();
     const unsigned long long bytes = pass->GetTextureBytes();
     std::printf("%-12s %10llu bytes (%.2f per pixel), expected %llu\n", c.Name, bytes,

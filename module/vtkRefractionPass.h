@@ -344,8 +344,9 @@ public:
    * the refraction is shaded at the pixels' corners instead of their centres (one ray per
    * pixel, as many as without it, each meeting the glass where the G-buffer interpolated at
    * the corner puts the surface) and each pixel averages its four corners: four rays per
-   * pixel for the price of one, plus a resolve stage. At the silhouette the share of a
-   * pixel's corners on the glass blends it over the scene. Costs one RGBA16F target.
+   * pixel for the price of one, plus a pass that finds the corners next to the glass (those
+   * are shaded) and a composite that averages each pixel's four. At the silhouette the share
+   * of a pixel's corners on the glass blends it over the scene. Costs one DEPTH32F target.
    */
   vtkSetMacro(AntiAliasing, bool);
   vtkGetMacro(AntiAliasing, bool);

@@ -81,8 +81,8 @@ void vtkRefractionShadeStage::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Shading program: " << (this->Shade ? "built" : "none") << "\n";
   os << indent << "Debug program: " << (this->Debug ? "built" : "none") << "\n";
   os << indent << "Composite program: " << (this->CompositeQuad ? "built" : "none") << "\n";
-  os << indent << "Anti-aliasing composite program: " << (this->CornerCompositeQuad ? "built" : "none")
-     << "\n";
+  os << indent << "Anti-aliasing composite program: "
+     << (this->CornerCompositeQuad ? "built" : "none") << "\n";
   os << indent << "Corner depth program: " << (this->CornerDepthQuad ? "built" : "none") << "\n";
 }
 
@@ -339,7 +339,8 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
 }
 
 //------------------------------------------------------------------------------
-void vtkRefractionShadeStage::DrawCornerDepth(vtkOpenGLRenderer* ren, vtkTextureObject* frontDepth)
+void vtkRefractionShadeStage::DrawCornerDepth(
+  vtkOpenGLRenderer* ren, vtkTextureObject* frontDepth)
 {
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   vtkOpenGLState* ostate = renWin->GetState();
@@ -383,7 +384,8 @@ void vtkRefractionShadeStage::Composite(
 {
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   vtkOpenGLState* ostate = renWin->GetState();
-  std::unique_ptr<vtkOpenGLQuadHelper>& quad = corners ? this->CornerCompositeQuad : this->CompositeQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad =
+    corners ? this->CornerCompositeQuad : this->CompositeQuad;
   if (!quad)
   {
     std::string source = rfCompositeFSSource;

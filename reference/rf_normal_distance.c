@@ -1,20 +1,17 @@
 #include "rf_normal_distance.h"
 
+#include "rf_mesh_scene.h"
+
 #include <embree3/rtcore.h>
 #include <math.h>
 
 rf_status rf_normal_distances(const float* positions, const float* normals, size_t vertex_count,
   const unsigned* triangles, size_t triangle_count, float* distances)
 {
-  RTCDevice device;
-  RTCScene scene;
-  RTCGeometry geometry;
-  float* vertex_buffer;
-  unsigned* index_buffer;
-  float extent = 0.0f;
-  float lo[3] = { INFINITY, INFINITY, INFINITY };
-  float hi[3] = { -INFINITY, -INFINITY, -INFINITY };
+  rf_mesh_scene mesh;
+  float extent;
   struct RTCIntersectContext context;
+  rf_status status;
   size_t i;
   int k;
 
@@ -30,59 +27,15 @@ rf_status rf_normal_distances(const float* positions, const float* normals, size
   {
     return RF_OK;
   }
-  for (i = 0; i < 3 * vertex_count; ++i)
-  {
-    if (!isfinite(positions[i]))
-    {
-      return RF_ERR_NOT_FINITE;
-    }
-  }
-  for (i = 0; i < 3 * triangle_count; ++i)
-  {
-    if (triangles[i] >= vertex_count)
-    {
-      return RF_ERR_NULL_ARGUMENT;
-    }
-  }
-  for (i = 0; i < vertex_count; ++i)
-  {
-    for (k = 0; k < 3; ++k)
-    {
-      lo[k] = fminf(lo[k], positions[3 * i + k]);
-      hi[k] = fmaxf(hi[k], positions[3 * i + k]);
-    }
-  }
-  for (k = 0; k < 3; ++k)
-  {
-    extent = fmaxf(extent, hi[k] - lo[k]);
-  }
-
-  device = rtcNewDevice(NULL);
-  if (!device)
-  {
-    return RF_ERR_NULL_ARGUMENT;
-  }
-  scene = rtcNewScene(device);
   /* Rays through the centre of a sphere end exactly on the opposite pole vertex: only the
-   * robust (watertight) intersector is sure to report such edge and vertex hits. */
-  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
-  geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  vertex_buffer = (float*)rtcSetNewGeometryBuffer(
-    geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertex_count);
-  index_buffer = (unsigned*)rtcSetNewGeometryBuffer(
-    geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangle_count);
-  for (i = 0; i < 3 * vertex_count; ++i)
+   * robust (watertight) intersector the scene uses is sure to report such edge and vertex
+   * hits. */
+  status = rf_mesh_scene_build(&mesh, positions, vertex_count, triangles, triangle_count);
+  if (status != RF_OK)
   {
-    vertex_buffer[i] = positions[i];
+    return status;
   }
-  for (i = 0; i < 3 * triangle_count; ++i)
-  {
-    index_buffer[i] = triangles[i];
-  }
-  rtcCommitGeometry(geometry);
-  rtcAttachGeometry(scene, geometry);
-  rtcReleaseGeometry(geometry);
-  rtcCommitScene(scene);
+  extent = (float)mesh.extent;
   rtcInitIntersectContext(&context);
 
   for (i = 0; i < vertex_count; ++i)
@@ -109,7 +62,7 @@ rf_status rf_normal_distances(const float* positions, const float* normals, size
     rh.ray.flags = 0;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(scene, &context, &rh);
+    rtcIntersect1(mesh.scene, &context, &rh);
     /* A ray that ends exactly on a vertex or an edge of the far side (the antipode of a UV
      * sphere's vertex is a vertex) can slip through between its triangles in float: retry
      * with the direction tilted by 1e-4 radians, which moves the hit by 1e-4 d at most. */
@@ -121,14 +74,13 @@ rf_status rf_normal_distances(const float* positions, const float* normals, size
       rh.ray.dir_z = -n[2] / len + tilt;
       rh.ray.tfar = INFINITY;
       rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      rtcIntersect1(scene, &context, &rh);
+      rtcIntersect1(mesh.scene, &context, &rh);
     }
     if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID)
     {
       distances[i] = rh.ray.tfar;
     }
   }
-  rtcReleaseScene(scene);
-  rtcReleaseDevice(device);
+  rf_mesh_scene_release(&mesh);
   return RF_OK;
 }

@@ -2,6 +2,7 @@
 #include "rf_sh_transfer.h"
 
 #include "rf_jobs.h"
+#include "rf_mesh_scene.h"
 #include "rf_optics.h"
 #include "rf_sh.h"
 #include "rf_vec3.h"
@@ -14,8 +15,7 @@
 /* The glass as Embree sees it, and what a path needs of the mesh. */
 typedef struct rf_sh_scene
 {
-  RTCDevice device;
-  RTCScene scene;
+  rf_mesh_scene mesh;
   const float* positions;
   const float* normals;
   const unsigned* triangles;
@@ -32,14 +32,8 @@ static rf_vec3 rf_sh_vertex_vector(const float* xyz, size_t index)
 static rf_status rf_sh_scene_build(rf_sh_scene* s, const float* positions, const float* normals,
   size_t vertex_count, const unsigned* triangles, size_t triangle_count, double ior)
 {
-  RTCGeometry geometry;
-  float* vertex_buffer;
-  unsigned* index_buffer;
-  double lo[3] = { INFINITY, INFINITY, INFINITY };
-  double hi[3] = { -INFINITY, -INFINITY, -INFINITY };
-  double extent = 0.0;
+  rf_status status;
   size_t i;
-  int k;
   memset(s, 0, sizeof(*s));
   if (!positions || !normals || !triangles)
   {
@@ -51,76 +45,28 @@ static rf_status rf_sh_scene_build(rf_sh_scene* s, const float* positions, const
   }
   for (i = 0; i < 3 * vertex_count; ++i)
   {
-    if (!isfinite(positions[i]) || !isfinite(normals[i]))
+    if (!isfinite(normals[i]))
     {
       return RF_ERR_NOT_FINITE;
     }
   }
-  for (i = 0; i < 3 * triangle_count; ++i)
+  status = rf_mesh_scene_build(&s->mesh, positions, vertex_count, triangles, triangle_count);
+  if (status != RF_OK)
   {
-    if (triangles[i] >= vertex_count)
-    {
-      return RF_REF_ERR_INDEX_OUT_OF_RANGE;
-    }
-  }
-  for (i = 0; i < vertex_count; ++i)
-  {
-    for (k = 0; k < 3; ++k)
-    {
-      lo[k] = fmin(lo[k], positions[3 * i + k]);
-      hi[k] = fmax(hi[k], positions[3 * i + k]);
-    }
-  }
-  for (k = 0; k < 3; ++k)
-  {
-    extent = fmax(extent, hi[k] - lo[k]);
+    return status;
   }
   s->positions = positions;
   s->normals = normals;
   s->triangles = triangles;
   s->vertex_count = vertex_count;
   s->ior = ior;
-  s->epsilon = 1e-4 * (extent > 0.0 ? extent : 1.0);
-  s->device = rtcNewDevice(NULL);
-  if (!s->device)
-  {
-    return RF_REF_ERR_EMBREE;
-  }
-  s->scene = rtcNewScene(s->device);
-  /* Watertight: a path through a vertex or an edge must not slip between triangles. */
-  rtcSetSceneFlags(s->scene, RTC_SCENE_FLAG_ROBUST);
-  if (triangle_count > 0)
-  {
-    geometry = rtcNewGeometry(s->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    vertex_buffer = (float*)rtcSetNewGeometryBuffer(
-      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertex_count);
-    index_buffer = (unsigned*)rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
-      RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangle_count);
-    if (!vertex_buffer || !index_buffer)
-    {
-      rtcReleaseGeometry(geometry);
-      return RF_REF_ERR_EMBREE;
-    }
-    memcpy(vertex_buffer, positions, 3 * vertex_count * sizeof(float));
-    memcpy(index_buffer, triangles, 3 * triangle_count * sizeof(unsigned));
-    rtcCommitGeometry(geometry);
-    rtcAttachGeometry(s->scene, geometry);
-    rtcReleaseGeometry(geometry);
-  }
-  rtcCommitScene(s->scene);
-  return rtcGetDeviceError(s->device) == RTC_ERROR_NONE ? RF_OK : RF_REF_ERR_EMBREE;
+  s->epsilon = 1e-4 * (s->mesh.extent > 0.0 ? s->mesh.extent : 1.0);
+  return RF_OK;
 }
 
 static void rf_sh_scene_release(rf_sh_scene* s)
 {
-  if (s->scene)
-  {
-    rtcReleaseScene(s->scene);
-  }
-  if (s->device)
-  {
-    rtcReleaseDevice(s->device);
-  }
+  rf_mesh_scene_release(&s->mesh);
   memset(s, 0, sizeof(*s));
 }
 
@@ -150,7 +96,7 @@ static int rf_sh_next_surface(
   rh.ray.flags = 0;
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(s->scene, &context, &rh);
+  rtcIntersect1(s->mesh.scene, &context, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
   {
     return 0;

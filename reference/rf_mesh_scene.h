@@ -1,0 +1,28 @@
+/* rf_mesh_scene.h: one triangle mesh as a watertight Embree 3 scene (ISR's normal distances,
+ * the SH precomputation's paths). Private to the reference library. */
+#ifndef RF_MESH_SCENE_H
+#define RF_MESH_SCENE_H
+
+#include "rf_reference_status.h"
+
+#include <embree3/rtcore.h>
+#include <stddef.h>
+
+typedef struct rf_mesh_scene
+{
+  RTCDevice device;
+  RTCScene scene;
+  double extent; /* the largest side of the mesh's bounding box (0 for a point or none) */
+} rf_mesh_scene;
+
+/* Checks the mesh (finite positions: RF_ERR_NOT_FINITE; indices below vertex_count:
+ * RF_REF_ERR_INDEX_OUT_OF_RANGE) and builds its scene with the robust (watertight)
+ * intersector: a path through a vertex or an edge must not slip between triangles. A mesh
+ * without triangles gives an empty scene. On any error s holds nothing to release;
+ * otherwise release it with rf_mesh_scene_release. */
+rf_status rf_mesh_scene_build(rf_mesh_scene* s, const float* positions, size_t vertex_count,
+  const unsigned* triangles, size_t triangle_count);
+
+void rf_mesh_scene_release(rf_mesh_scene* s);
+
+#endif /* RF_MESH_SCENE_H */

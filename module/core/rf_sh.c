@@ -15,10 +15,14 @@ int rf_sh_coefficient_count(int order)
   return order >= 0 && order <= RF_SH_ORDER_MAX ? rfk_sh_count(order) : 0;
 }
 
-/* The unit direction, or an error. */
-static rf_status unit_direction(const double direction[3], rf_float3* unit)
+/* The unit direction of a basis of a valid order, or an error (the order checked first). */
+static rf_status order_and_unit_direction(int order, const double direction[3], rf_float3* unit)
 {
   rf_float3 d;
+  if (rf_sh_coefficient_count(order) == 0)
+  {
+    return RF_ERR_STEPS_OUT_OF_RANGE;
+  }
   if (!isfinite(direction[0]) || !isfinite(direction[1]) || !isfinite(direction[2]))
   {
     return RF_ERR_NOT_FINITE;
@@ -42,11 +46,7 @@ rf_status rf_sh_basis(int order, const double direction[3], double* basis)
   {
     return RF_ERR_NULL_ARGUMENT;
   }
-  if (rf_sh_coefficient_count(order) == 0)
-  {
-    return RF_ERR_STEPS_OUT_OF_RANGE;
-  }
-  status = unit_direction(direction, &d);
+  status = order_and_unit_direction(order, direction, &d);
   if (status != RF_OK)
   {
     return status;
@@ -128,11 +128,7 @@ rf_status rf_sh_evaluate(int order, const double* coefficients, const double dir
   {
     return RF_ERR_NULL_ARGUMENT;
   }
-  if (rf_sh_coefficient_count(order) == 0)
-  {
-    return RF_ERR_STEPS_OUT_OF_RANGE;
-  }
-  status = unit_direction(direction, &d);
+  status = order_and_unit_direction(order, direction, &d);
   if (status != RF_OK)
   {
     return status;

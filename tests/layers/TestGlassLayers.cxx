@@ -33,7 +33,6 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkContourFilter.h>
-#include <vtkCubeSource.h>
 #include <vtkLookupTable.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkQuadric.h>
@@ -46,7 +45,6 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkTesting.h>
-#include <vtkTriangleFilter.h>
 
 #include <cmath>
 #include <cstdio>
@@ -71,11 +69,6 @@ vtkSmartPointer<vtkActor> AddBall(
   return ball;
 }
 
-vtkSmartPointer<vtkImageData> Trace(Scene& scene, int mode)
-{
-  return scene.Trace(mode);
-}
-
 // The pixels whose sight line meets `actor`, from the reference traced with it alone visible.
 std::vector<unsigned char> Footprint(Scene& scene, vtkActor* actor)
 {
@@ -90,7 +83,7 @@ std::vector<unsigned char> Footprint(Scene& scene, vtkActor* actor)
       hidden.push_back(other);
     }
   }
-  auto traced = Trace(scene, vtkRefractionReference::TWO_INTERFACE);
+  auto traced = scene.Trace(vtkRefractionReference::TWO_INTERFACE);
   for (vtkActor* other : hidden)
   {
     other->VisibilityOn();
@@ -102,21 +95,6 @@ std::vector<unsigned char> Footprint(Scene& scene, vtkActor* actor)
     mask[i] = hit->GetComponent(static_cast<vtkIdType>(i), 0) > 0.5;
   }
   return mask;
-}
-
-size_t Count(const std::vector<unsigned char>& mask)
-{
-  size_t n = 0;
-  for (unsigned char m : mask)
-  {
-    n += m;
-  }
-  return n;
-}
-
-double PSNR(vtkImageData* picture, vtkImageData* reference, const std::vector<unsigned char>& mask)
-{
-  return rftest::PSNROnMask(picture, reference, mask);
 }
 
 // Pixels of `mask` where any channel of a and b differs by more than 24.
@@ -167,20 +145,20 @@ int Overlapping(int argc, char* argv[])
   {
     both[i] = both[i] && behind[i];
   }
-  auto full = Trace(scene, vtkRefractionReference::FULL);
+  auto full = scene.Trace(vtkRefractionReference::FULL);
   RF_REQUIRE(full, "the full reference failed");
   scene.Pass->SetMethod(vtkRefractionPass::DIR);
   auto dir = scene.Render();
   scene.Pass->SetMethod(vtkRefractionPass::PEEL);
   auto peel = scene.Render();
   RF_REQUIRE(scene.Pass->GetNumberOfGlassProps() == 2, "not both balls drawn as glass");
-  const double psnrDIR = PSNR(dir, full, both);
-  const double psnrPEEL = PSNR(peel, full, both);
+  const double psnrDIR = rftest::PSNROnMask(dir, full, both);
+  const double psnrPEEL = rftest::PSNROnMask(peel, full, both);
   std::printf("overlapping: %zu pixels see both balls; PSNR against the full reference: PEEL "
               "(K = 4) %.2f dB, DIR %.2f dB\n",
-    Count(both), psnrPEEL, psnrDIR);
+    rftest::Count(both), psnrPEEL, psnrDIR);
   // Measured on llvmpipe at 160 x 160: 1179 pixels, PEEL 23.26 dB, DIR 12.58 dB.
-  RF_REQUIRE(Count(both) > 500, "too few overlapping pixels: %zu", Count(both));
+  RF_REQUIRE(rftest::Count(both) > 500, "too few overlapping pixels: %zu", rftest::Count(both));
   RF_REQUIRE(psnrPEEL >= psnrDIR + 3.0, "PEEL gains %.2f dB over DIR (at least 3 expected)",
     psnrPEEL - psnrDIR);
   return Regression(argc, argv, scene.Window);
@@ -192,7 +170,7 @@ int Nested(int argc, char* argv[])
   AddBall(scene, 0.0, 0.0, 0.0, 1.0, 1.33);
   auto inner = AddBall(scene, 0.15, 0.1, 0.0, 0.5, 1.9);
   const std::vector<unsigned char> innerPixels = Footprint(scene, inner);
-  auto full = Trace(scene, vtkRefractionReference::FULL);
+  auto full = scene.Trace(vtkRefractionReference::FULL);
   RF_REQUIRE(full, "the full reference failed");
   scene.Pass->SetMethod(vtkRefractionPass::DIR);
   auto dir = scene.Render();
@@ -203,16 +181,17 @@ int Nested(int argc, char* argv[])
   auto vanished = scene.Render();
   vtkRefractionPass::MakeGlass(inner, 1.9);
   const int changed = Changed(peel, vanished, innerPixels);
-  const double psnrDIR = PSNR(dir, full, innerPixels);
-  const double psnrPEEL = PSNR(peel, full, innerPixels);
+  const double psnrDIR = rftest::PSNROnMask(dir, full, innerPixels);
+  const double psnrPEEL = rftest::PSNROnMask(peel, full, innerPixels);
   std::printf("nested: %zu pixels on the inner ball, %d of them change by more than 24 when it "
               "takes the outer index; PSNR against the full reference there: PEEL (K = 4) "
               "%.2f dB, DIR %.2f dB\n",
-    Count(innerPixels), changed, psnrPEEL, psnrDIR);
+    rftest::Count(innerPixels), changed, psnrPEEL, psnrDIR);
   // Measured on llvmpipe at 160 x 160: 1097 pixels, 864 change; PEEL 28.61 dB, DIR 12.65 dB.
-  RF_REQUIRE(Count(innerPixels) > 1000, "too few inner pixels: %zu", Count(innerPixels));
-  RF_REQUIRE(changed > static_cast<int>(Count(innerPixels) / 2),
-    "the inner ball does not show (%d of %zu pixels change)", changed, Count(innerPixels));
+  RF_REQUIRE(rftest::Count(innerPixels) > 1000, "too few inner pixels: %zu",
+    rftest::Count(innerPixels));
+  RF_REQUIRE(changed > static_cast<int>(rftest::Count(innerPixels) / 2),
+    "the inner ball does not show (%d of %zu pixels change)", changed, rftest::Count(innerPixels));
   RF_REQUIRE(psnrPEEL >= psnrDIR + 3.0, "PEEL gains %.2f dB over DIR (at least 3 expected)",
     psnrPEEL - psnrDIR);
   return Regression(argc, argv, scene.Window);
@@ -265,28 +244,29 @@ int NestedContour()
   RF_REQUIRE(scene.Pass->GetNumberOfGlassProps() == 2, "not both contours drawn as glass");
   // Against the reference, which knows no data colours, the glass untinted.
   vtkRefractionPass::MakeGlass(shells[1], indices[1]);
-  auto full = Trace(scene, vtkRefractionReference::FULL);
+  auto full = scene.Trace(vtkRefractionReference::FULL);
   RF_REQUIRE(full, "the full reference failed");
   scene.Pass->DataColourOff();
   scene.Pass->SetMethod(vtkRefractionPass::DIR);
-  const double psnrDIR = PSNR(scene.Render(), full, innerPixels);
+  const double psnrDIR = rftest::PSNROnMask(scene.Render(), full, innerPixels);
   scene.Pass->SetMethod(vtkRefractionPass::PEEL);
-  const double psnrPEEL = PSNR(scene.Render(), full, innerPixels);
+  const double psnrPEEL = rftest::PSNROnMask(scene.Render(), full, innerPixels);
   const int changedDIR = Changed(pictures[0][0], pictures[0][1], innerPixels);
   const int changedPEEL = Changed(pictures[1][0], pictures[1][1], innerPixels);
   std::printf("nested_contour: %zu pixels on the inner contour; changed by more than 24 when it "
               "takes the outer index: PEEL %d, DIR %d; PSNR against the full reference there: "
               "PEEL %.2f dB, DIR %.2f dB\n",
-    Count(innerPixels), changedPEEL, changedDIR, psnrPEEL, psnrDIR);
+    rftest::Count(innerPixels), changedPEEL, changedDIR, psnrPEEL, psnrDIR);
   // Measured on llvmpipe at 160 x 160: 1292 pixels; 351 change with PEEL, 0 with DIR; PEEL
   // 28.14 dB, DIR 16.82 dB.
-  RF_REQUIRE(Count(innerPixels) > 1000, "too few inner pixels: %zu", Count(innerPixels));
+  RF_REQUIRE(rftest::Count(innerPixels) > 1000, "too few inner pixels: %zu",
+    rftest::Count(innerPixels));
   RF_REQUIRE(psnrPEEL >= psnrDIR + 3.0, "PEEL gains %.2f dB over DIR (at least 3 expected)",
     psnrPEEL - psnrDIR);
-  RF_REQUIRE(changedPEEL > static_cast<int>(Count(innerPixels) / 5),
+  RF_REQUIRE(changedPEEL > static_cast<int>(rftest::Count(innerPixels) / 5),
     "the inner contour does not show with PEEL (%d of %zu pixels change)", changedPEEL,
-    Count(innerPixels));
-  RF_REQUIRE(changedDIR < static_cast<int>(Count(innerPixels) / 20),
+    rftest::Count(innerPixels));
+  RF_REQUIRE(changedDIR < static_cast<int>(rftest::Count(innerPixels) / 20),
     "DIR shows the inner contour (%d pixels change): the test cannot tell PEEL from it",
     changedDIR);
   return EXIT_SUCCESS;
@@ -295,13 +275,7 @@ int NestedContour()
 int TIR()
 {
   Scene scene;
-  vtkNew<vtkCubeSource> cube;
-  cube->SetXLength(1.4);
-  cube->SetYLength(1.4);
-  cube->SetZLength(1.4);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(cube->GetOutputPort());
-  auto glass = rftest::ActorFor(triangles->GetOutputPort());
+  auto glass = rftest::ActorFor(rftest::TIRCube()->GetOutputPort());
   glass->RotateX(35.0);
   glass->RotateY(40.0);
   vtkRefractionPass::MakeGlass(glass, 1.6);
@@ -310,26 +284,20 @@ int TIR()
   auto clamped = scene.Render();
   scene.Pass->SetTIRBounces(2);
   auto followed = scene.Render();
-  auto two = Trace(scene, vtkRefractionReference::TWO_INTERFACE);
-  auto full = Trace(scene, vtkRefractionReference::FULL);
+  auto two = scene.Trace(vtkRefractionReference::TWO_INTERFACE);
+  auto full = scene.Trace(vtkRefractionReference::FULL);
   RF_REQUIRE(two && full, "the reference failed");
-  vtkDataArray* tir = two->GetPointData()->GetArray("TIR");
-  vtkDataArray* hit = two->GetPointData()->GetArray("Hit");
-  RF_REQUIRE(tir && hit, "missing reference arrays");
-  std::vector<unsigned char> reflected(static_cast<size_t>(kSize) * kSize);
-  for (size_t i = 0; i < reflected.size(); ++i)
-  {
-    reflected[i] = hit->GetComponent(static_cast<vtkIdType>(i), 0) > 0.5 &&
-      tir->GetComponent(static_cast<vtkIdType>(i), 0) > 0.5;
-  }
-  const double psnrClamp = PSNR(clamped, full, reflected);
-  const double psnrFollowed = PSNR(followed, full, reflected);
+  const std::vector<unsigned char> reflected = rftest::TotallyReflected(two);
+  RF_REQUIRE(!reflected.empty(), "missing reference arrays");
+  const double psnrClamp = rftest::PSNROnMask(clamped, full, reflected);
+  const double psnrFollowed = rftest::PSNROnMask(followed, full, reflected);
   std::printf("tir: %zu totally reflected pixels; PSNR against the full reference: PEEL with two "
               "reflections followed %.2f dB, with the clamp %.2f dB\n",
-    Count(reflected), psnrFollowed, psnrClamp);
+    rftest::Count(reflected), psnrFollowed, psnrClamp);
   // Measured on llvmpipe at 160 x 160: 3141 pixels, 21.84 dB followed, 12.77 dB clamped (DIR
   // with two bounces: 21.7 dB, scene.tir_followed).
-  RF_REQUIRE(Count(reflected) > 1000, "too few totally reflected pixels: %zu", Count(reflected));
+  RF_REQUIRE(rftest::Count(reflected) > 1000, "too few totally reflected pixels: %zu",
+    rftest::Count(reflected));
   RF_REQUIRE(psnrFollowed > psnrClamp + 1.0, "following TIR gains %.2f dB (at least 1 expected)",
     psnrFollowed - psnrClamp);
   return EXIT_SUCCESS;

@@ -26,6 +26,7 @@
 #include "vtkRefractionReference.h"
 #include "rf_metrics.h"
 
+#include "rfReferenceScene.h"
 #include "rfTestScene.h"
 #include "rf_require.h"
 
@@ -52,7 +53,6 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSphereSource.h>
-#include <vtkTriangleFilter.h>
 
 #include <cmath>
 #include <cstring>
@@ -85,16 +85,15 @@ vtkSmartPointer<vtkActor> Flat(vtkAlgorithmOutput* port, double r, double g, dou
   return actor;
 }
 
-struct Scene
+// rftest::ReferenceScene (its window, camera and reference) with a glass sphere of radius 1
+// over the renderer's gradient background, which the pass shows as its environment.
+struct Scene : rftest::ReferenceScene
 {
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkRefractionPass> Pass;
   vtkSmartPointer<vtkActor> Glass;
-  vtkSmartPointer<vtkRenderWindow> Window;
 
   explicit Scene(double ior)
+    : ReferenceScene(kSize)
   {
-    this->Renderer->SetPass(this->Pass);
     this->Pass->SetEnvironmentModeToRenderer();
     this->Renderer->GradientBackgroundOn();
     this->Renderer->SetBackground(0.1, 0.15, 0.3);
@@ -106,22 +105,6 @@ struct Scene
     this->Glass = rftest::ActorFor(sphere->GetOutputPort());
     vtkRefractionPass::MakeGlass(this->Glass, ior);
     this->Renderer->AddActor(this->Glass);
-    this->Window = rftest::MakeWindow(this->Renderer, kSize, kSize);
-  }
-  void Look()
-  {
-    vtkCamera* camera = this->Renderer->GetActiveCamera();
-    camera->SetFocalPoint(0.0, 0.0, 0.0);
-    camera->SetPosition(0.0, 0.0, 8.0);
-    camera->SetViewUp(0.0, 1.0, 0.0);
-    camera->SetViewAngle(30.0);
-    this->Renderer->ResetCameraClippingRange();
-  }
-  vtkSmartPointer<vtkImageData> Render()
-  {
-    this->Look();
-    this->Window->Render();
-    return rftest::Grab(this->Window);
   }
 };
 
@@ -666,13 +649,10 @@ int AntiAliasing()
   scene.Pass->DebugOutputOff();
   RF_REQUIRE(scene.Pass->GetTextureBytes() > 0, "no targets");
 
-  vtkNew<vtkRefractionReference> reference;
-  reference->SetMode(vtkRefractionReference::TWO_INTERFACE);
-  reference->SetEnvironmentMode(scene.Pass->GetEnvironmentMode());
-  reference->SetSamplesPerSide(4);
-  RF_REQUIRE(reference->Trace(scene.Renderer, kSize, kSize), "the reference failed");
-  vtkDataArray* colour = reference->GetOutput()->GetPointData()->GetArray("Colour");
-  vtkDataArray* flags = reference->GetOutput()->GetPointData()->GetArray("Flags");
+  vtkSmartPointer<vtkImageData> reference = scene.Trace(vtkRefractionReference::TWO_INTERFACE, 4);
+  RF_REQUIRE(reference, "the reference failed");
+  vtkDataArray* colour = reference->GetPointData()->GetArray("Colour");
+  vtkDataArray* flags = reference->GetPointData()->GetArray("Flags");
   vtkDataArray* passFlags = debug->GetPointData()->GetArray("Flags");
   RF_REQUIRE(colour && flags && passFlags, "missing arrays");
   const size_t count = static_cast<size_t>(kSize) * kSize;
@@ -756,13 +736,7 @@ int TIRFollowed()
   scene.Pass->SetEnvironmentModeToBuiltin();
   scene.Renderer->GradientBackgroundOff();
   scene.Renderer->SetBackground(0.0, 0.0, 0.0);
-  vtkNew<vtkCubeSource> cube;
-  cube->SetXLength(1.4);
-  cube->SetYLength(1.4);
-  cube->SetZLength(1.4);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(cube->GetOutputPort());
-  auto glass = rftest::ActorFor(triangles->GetOutputPort());
+  auto glass = rftest::ActorFor(rftest::TIRCube()->GetOutputPort());
   glass->RotateX(35.0);
   glass->RotateY(40.0);
   vtkRefractionPass::MakeGlass(glass, 1.6);
@@ -774,26 +748,14 @@ int TIRFollowed()
   auto followed = scene.Render();
   scene.Pass->SetTIRBounces(0);
 
-  vtkNew<vtkRefractionReference> two;
-  two->SetMode(vtkRefractionReference::TWO_INTERFACE);
-  two->SetEnvironmentMode(scene.Pass->GetEnvironmentMode());
-  RF_REQUIRE(two->Trace(scene.Renderer, kSize, kSize), "the two-interface reference failed");
-  vtkNew<vtkRefractionReference> full;
-  full->SetMode(vtkRefractionReference::FULL);
-  full->SetEnvironmentMode(scene.Pass->GetEnvironmentMode());
-  RF_REQUIRE(full->Trace(scene.Renderer, kSize, kSize), "the full reference failed");
-  vtkDataArray* tir = two->GetOutput()->GetPointData()->GetArray("TIR");
-  vtkDataArray* hit = two->GetOutput()->GetPointData()->GetArray("Hit");
-  vtkDataArray* colour = full->GetOutput()->GetPointData()->GetArray("Colour");
-  RF_REQUIRE(tir && hit && colour, "missing reference arrays");
-  const size_t count = static_cast<size_t>(kSize) * kSize;
-  std::vector<unsigned char> reflected(count);
-  size_t reflectedCount = 0;
-  for (size_t i = 0; i < count; ++i)
-  {
-    reflected[i] = hit->GetComponent(i, 0) > 0.5 && tir->GetComponent(i, 0) > 0.5;
-    reflectedCount += reflected[i];
-  }
+  vtkSmartPointer<vtkImageData> two = scene.Trace(vtkRefractionReference::TWO_INTERFACE);
+  RF_REQUIRE(two, "the two-interface reference failed");
+  vtkSmartPointer<vtkImageData> full = scene.Trace(vtkRefractionReference::FULL);
+  RF_REQUIRE(full, "the full reference failed");
+  vtkDataArray* colour = full->GetPointData()->GetArray("Colour");
+  const std::vector<unsigned char> reflected = rftest::TotallyReflected(two);
+  RF_REQUIRE(!reflected.empty() && colour, "missing reference arrays");
+  const size_t reflectedCount = rftest::Count(reflected);
   RF_REQUIRE(reflectedCount > 1000, "too few totally reflected pixels: %zu", reflectedCount);
   double psnrOff = 0.0;
   double psnrOn = 0.0;

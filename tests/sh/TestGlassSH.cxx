@@ -21,7 +21,6 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
-#include <vtkCubeSource.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkLinearSubdivisionFilter.h>
@@ -36,7 +35,6 @@
 #include <vtkRenderer.h>
 #include <vtkSphereSource.h>
 #include <vtkTesting.h>
-#include <vtkTriangleFilter.h>
 
 #include <cmath>
 #include <cstdio>
@@ -66,16 +64,6 @@ vtkSmartPointer<vtkActor> SHActor(vtkAlgorithmOutput* port, double ior, int orde
   std::printf("precomputed %lld points at order %d in %.2f s\n",
     static_cast<long long>(poly->GetNumberOfPoints()), order, transfer->GetLastComputeSeconds());
   return actor;
-}
-
-double PSNR(vtkImageData* picture, vtkImageData* reference, const std::vector<unsigned char>& mask)
-{
-  return rftest::PSNROnMask(picture, reference, mask);
-}
-
-vtkSmartPointer<vtkImageData> Trace(Scene& scene, int mode)
-{
-  return scene.Trace(mode);
 }
 
 vtkSmartPointer<vtkAlgorithm> Ball()
@@ -171,7 +159,7 @@ int SphereExit(int argc, char* argv[], bool regression)
     ++samples;
   }
   RF_REQUIRE(samples > 40, "too few pixels on the diameter: %d", samples);
-  auto full = Trace(scene, vtkRefractionReference::FULL);
+  auto full = scene.Trace(vtkRefractionReference::FULL);
   RF_REQUIRE(full, "the reference failed");
   vtkDataArray* hit = full->GetPointData()->GetArray("Hit");
   std::vector<unsigned char> glass(static_cast<size_t>(kSize) * kSize);
@@ -181,8 +169,8 @@ int SphereExit(int argc, char* argv[], bool regression)
   }
   scene.Pass->SetMethod(vtkRefractionPass::DIR);
   auto dir = scene.Render();
-  const double psnrSH = PSNR(sh, full, glass);
-  const double psnrDIR = PSNR(dir, full, glass);
+  const double psnrSH = rftest::PSNROnMask(sh, full, glass);
+  const double psnrDIR = rftest::PSNROnMask(dir, full, glass);
   std::printf("sphere_exit: %d pixels of the diameter (impact < 0.9): exit direction against the "
               "closed form mean %.3f, largest %.3f deg; PSNR against the full reference: SH %.2f "
               "dB, DIR %.2f dB\n",
@@ -200,15 +188,9 @@ int SphereExit(int argc, char* argv[], bool regression)
 int CubeTIR()
 {
   Scene scene;
-  vtkNew<vtkCubeSource> cube;
-  cube->SetXLength(1.4);
-  cube->SetYLength(1.4);
-  cube->SetZLength(1.4);
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputConnection(cube->GetOutputPort());
   // Per-vertex functions need vertices across the faces, not only at the corners.
   vtkNew<vtkLinearSubdivisionFilter> finer;
-  finer->SetInputConnection(triangles->GetOutputPort());
+  finer->SetInputConnection(rftest::TIRCube()->GetOutputPort());
   finer->SetNumberOfSubdivisions(4);
   auto actor = SHActor(finer->GetOutputPort(), 1.6, 8);
   actor->RotateX(35.0);
@@ -222,22 +204,15 @@ int CubeTIR()
   auto clamped = scene.Render();
   scene.Pass->SetTIRBounces(2);
   auto followed = scene.Render();
-  auto two = Trace(scene, vtkRefractionReference::TWO_INTERFACE);
-  auto full = Trace(scene, vtkRefractionReference::FULL);
+  auto two = scene.Trace(vtkRefractionReference::TWO_INTERFACE);
+  auto full = scene.Trace(vtkRefractionReference::FULL);
   RF_REQUIRE(two && full, "the reference failed");
-  vtkDataArray* tir = two->GetPointData()->GetArray("TIR");
-  vtkDataArray* hit = two->GetPointData()->GetArray("Hit");
-  std::vector<unsigned char> reflected(static_cast<size_t>(kSize) * kSize);
-  size_t count = 0;
-  for (size_t i = 0; i < reflected.size(); ++i)
-  {
-    reflected[i] = hit->GetComponent(static_cast<vtkIdType>(i), 0) > 0.5 &&
-      tir->GetComponent(static_cast<vtkIdType>(i), 0) > 0.5;
-    count += reflected[i];
-  }
-  const double psnrSH = PSNR(sh, full, reflected);
-  const double psnrClamp = PSNR(clamped, full, reflected);
-  const double psnrFollowed = PSNR(followed, full, reflected);
+  const std::vector<unsigned char> reflected = rftest::TotallyReflected(two);
+  RF_REQUIRE(!reflected.empty(), "missing reference arrays");
+  const size_t count = rftest::Count(reflected);
+  const double psnrSH = rftest::PSNROnMask(sh, full, reflected);
+  const double psnrClamp = rftest::PSNROnMask(clamped, full, reflected);
+  const double psnrFollowed = rftest::PSNROnMask(followed, full, reflected);
   std::printf("cube_tir: %zu totally reflected pixels; PSNR against the full reference: SH %.2f "
               "dB, DIR with the clamp %.2f dB, DIR with two reflections followed %.2f dB\n",
     count, psnrSH, psnrClamp, psnrFollowed);

@@ -160,7 +160,6 @@ vtkSmartPointer<vtkGenericOpenGLRenderWindow> vtkRefractionCreateEGLWindow(
   window->SetSize(width, height);
   window->SetReadyForRendering(true);
   window->SetIsCurrent(true);
-  window->SetMultiSamples(0);
   // VTK's own windows start their context with VTK's default state (depth function
   // GL_LEQUAL); a vtkGenericOpenGLRenderWindow adopts the context's state instead, GL_LESS
   // on a new context. This context is new and the window's alone, so give it VTK's default:

@@ -104,7 +104,6 @@ def build_scene(size=300, method="dir", index_of_refraction=1.5):
 
     window = vtkRenderWindow()
     window.SetSize(size, size)
-    window.SetMultiSamples(0)
     window.AddRenderer(renderer)
     return window, renderer, glass_actor, glass_pass
 

@@ -513,7 +513,6 @@ vtkSmartPointer<vtkRenderWindow> MakeWindow(const rfViewerSettings& s, bool inte
     }
     auto window = vtkSmartPointer<vtkRenderWindow>::New();
     window->SetSize(s.Width, s.Height);
-    window->SetMultiSamples(0);
     window->SetWindowName(rfViewerProgram());
     return window;
   }
@@ -536,7 +535,6 @@ vtkSmartPointer<vtkRenderWindow> MakeWindow(const rfViewerSettings& s, bool inte
     error.c_str());
   window = vtkSmartPointer<vtkRenderWindow>::New();
   window->SetSize(s.Width, s.Height);
-  window->SetMultiSamples(0);
   window->SetOffScreenRendering(1);
   return window;
 }
@@ -648,8 +646,13 @@ vtkSmartPointer<vtkImageData> GrabMask(Scene& scene, vtkRenderWindow* window)
   property->SetColor(1.0, 1.0, 1.0);
   renderer->SetBackground(0.0, 0.0, 0.0);
   renderer->GradientBackgroundOff();
+  // The pass draws the glass where a pixel's centre is covered; a multisampled window would
+  // blend the plain actor's edge pixels by coverage instead, so the mask is single-sampled.
+  const int samples = window->GetMultiSamples();
+  window->SetMultiSamples(0);
   window->Render();
   vtkSmartPointer<vtkImageData> mask = Grab(window);
+  window->SetMultiSamples(samples);
   property->LightingOn();
   renderer->SetBackground(background);
   renderer->SetGradientBackground(gradient);

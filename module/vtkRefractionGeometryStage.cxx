@@ -381,6 +381,16 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
   }
   auto material = this->MaterialIndex.find(prop);
   program->SetUniformi("rfGeometryStage", this->Stage);
+  if (this->Stage == STAGE_MASK && this->Renderer)
+  {
+    // vtkOpenGLActor::Render turns depth writes on for an opaque actor just before this call.
+    // The mask must leave the scene's depth alone: in a multisampled window the glass's
+    // per-sample depths would otherwise lie behind the per-pixel depth the composite writes
+    // at about half the samples, and the glass would come out half dark.
+    static_cast<vtkOpenGLRenderWindow*>(this->Renderer->GetRenderWindow())
+      ->GetState()
+      ->vtkglDepthMask(GL_FALSE);
+  }
   if (program->IsUniformUsed("rfMaterial"))
   {
     program->SetUniformf("rfMaterial",

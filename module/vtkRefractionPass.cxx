@@ -413,6 +413,10 @@ void vtkRefractionPass::RenderGlass(
   {
     return;
   }
+  // Errors of the passes before this one are theirs (VTK's own clear is compiled out).
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
+  {
+  }
   vtkOpenGLRenderer* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   vtkOpenGLRenderWindow* renWin =
     ren ? vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow()) : nullptr;
@@ -465,8 +469,25 @@ void vtkRefractionPass::RenderGlass(
     method->NeedsDepthRange() && this->DepthRangeMode == DEPTH_RANGE_REDUCTION;
   // The scene behind the glass is captured only where it can show: opaque props drawn, a
   // method that follows rays through it.
-  const bool sceneRefraction =
+  bool sceneRefraction =
     this->SceneRefraction && opaqueScene && method->SupportsSceneRefraction();
+  if (sceneRefraction)
+  {
+    std::string error;
+    if (!this->Targets->MatchSceneDepth(error))
+    {
+      if (error != this->WarnedSceneDepth)
+      {
+        vtkErrorMacro("Scene refraction is off: " << error << ".");
+      }
+      this->WarnedSceneDepth = error;
+      sceneRefraction = false;
+    }
+    else
+    {
+      this->WarnedSceneDepth.clear();
+    }
+  }
   std::vector<bool> wanted;
   method->AddTargets(wanted, this);
   if (sceneRefraction)
@@ -602,7 +623,7 @@ void vtkRefractionPass::RenderGlass(
     this->DebugImage = this->ShadeStage->RenderDebug(
       ren, method, this, this->Targets, frame, materialIOR, materialSheet);
   }
-  vtkOpenGLCheckErrorMacro("failed after the refraction pass");
+  this->ReportGLError("the refraction pass's frame");
 }
 
 //------------------------------------------------------------------------------
@@ -624,30 +645,56 @@ vtkTexture* vtkRefractionPass::GetCubeEnvironment(vtkOpenGLRenderer* ren)
 //------------------------------------------------------------------------------
 void vtkRefractionPass::CaptureScene(vtkOpenGLRenderer* ren, bool depth)
 {
-  // The viewport of the scene drawn so far (colour, with SSP's mask in alpha) into the
-  // texture the glass samples; its depth copied as VTK's depth peeling copies the opaque
-  // depth (any depth format converts).
+  // The viewport of the scene drawn so far (colour, with SSP's mask in alpha, and with
+  // `depth` its depth) into the textures the glass samples, by one blit: it resolves a
+  // multisampled window (VTK's default), which a texture copy from the framebuffer cannot
+  // read. SCENE_DEPTH has the scene's depth format (MatchSceneDepth), as a depth blit needs.
   vtkOpenGLState* ostate = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
   vtkOpenGLFramebufferObject* fbo = this->Targets->GetFramebuffer();
-  if (depth)
-  {
-    this->Targets->Get(vtkRefractionTargets::SCENE_DEPTH)
-      ->CopyFromFrameBuffer(this->ViewportOrigin[0], this->ViewportOrigin[1], 0, 0, this->Width,
-        this->Height);
-  }
   fbo->SaveCurrentBindingsAndBuffers();
   fbo->Bind(GL_DRAW_FRAMEBUFFER);
   fbo->AddColorAttachment(0, this->Targets->Get(vtkRefractionTargets::SCENE_COLOR));
   fbo->ActivateDrawBuffers(1);
+  if (depth)
+  {
+    fbo->AddDepthAttachment(this->Targets->Get(vtkRefractionTargets::SCENE_DEPTH));
+  }
   {
     vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
     ostate->vtkglScissor(0, 0, this->Width, this->Height);
     ostate->vtkglBlitFramebuffer(this->ViewportOrigin[0], this->ViewportOrigin[1],
       this->ViewportOrigin[0] + this->Width, this->ViewportOrigin[1] + this->Height, 0, 0,
-      this->Width, this->Height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+      this->Width, this->Height, GL_COLOR_BUFFER_BIT | (depth ? GL_DEPTH_BUFFER_BIT : 0),
+      GL_NEAREST);
+  }
+  if (depth)
+  {
+    fbo->RemoveDepthAttachment();
   }
   fbo->UnBind(GL_DRAW_FRAMEBUFFER);
   fbo->RestorePreviousBindingsAndBuffers();
+  this->ReportGLError(depth ? "glBlitFramebuffer of the scene's colour and depth"
+                            : "glBlitFramebuffer of the scene's colour");
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::ReportGLError(const char* call)
+{
+  const GLenum code = glGetError();
+  if (code == GL_NO_ERROR)
+  {
+    return;
+  }
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
+  {
+  }
+  const std::string where(call);
+  if (this->ReportedGLErrors.insert(where).second)
+  {
+    vtkErrorMacro("OpenGL error " << vtkOpenGLStrError(code) << " (0x" << std::hex << code
+                                  << std::dec << ") in " << where
+                                  << "; reported once per call.");
+  }
 }
 
 //------------------------------------------------------------------------------

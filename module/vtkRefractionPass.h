@@ -35,6 +35,7 @@
 #include "vtkSmartPointer.h"              // For members
 
 #include <memory> // For std::unique_ptr
+#include <set>    // For ReportedGLErrors
 #include <string> // For members
 #include <vector> // For members
 
@@ -407,6 +408,12 @@ protected:
   int RenderOpaqueAndGlass(const vtkRenderState* s, vtkRenderPass* opaque);
   void RenderGlass(const vtkRenderState* s, std::vector<vtkProp*>& glass, bool opaqueScene);
   void CaptureScene(vtkOpenGLRenderer* ren, bool depth);
+  /**
+   * Any OpenGL error pending is reported as an error of `call` (once per call: the same fault
+   * every frame would flood the log) and cleared. Debian's VTK is built without
+   * VTK_REPORT_OPENGL_ERRORS, so vtkOpenGLCheckErrorMacro says nothing there.
+   */
+  void ReportGLError(const char* call);
   void UpdateCamera(vtkOpenGLRenderer* ren);
   vtkTexture* GetCubeEnvironment(vtkOpenGLRenderer* ren);
   void StartTimer(int stage);
@@ -455,6 +462,8 @@ protected:
 
   bool WarnedEmptyViewport = false;
   std::string WarnedSHTransfer; ///< the last reason SH fell back to DIR, said once
+  std::string WarnedSceneDepth; ///< the last reason the scene could not be captured
+  std::set<std::string> ReportedGLErrors; ///< the calls whose GL error was reported
   bool WarnedEnvironment = false;
   int Width = 0;
   int Height = 0;

@@ -123,7 +123,15 @@ void vtkRefractionTargets::Allocate(vtkOpenGLRenderWindow* renWin, int target)
   {
     auto depth = vtkSmartPointer<vtkTextureObject>::New();
     depth->SetContext(renWin);
-    depth->AllocateDepth(this->Width, this->Height, vtkTextureObject::Float32);
+    if (target == SCENE_DEPTH && this->SceneDepthFormat < 0)
+    {
+      depth->AllocateDepthStencil(this->Width, this->Height);
+    }
+    else
+    {
+      depth->AllocateDepth(this->Width, this->Height,
+        target == SCENE_DEPTH ? this->SceneDepthFormat : vtkTextureObject::Float32);
+    }
     this->Targets[target] = depth;
   }
   else
@@ -194,6 +202,62 @@ vtkTextureObject* vtkRefractionTargets::Get(int target) const
 vtkOpenGLFramebufferObject* vtkRefractionTargets::GetFramebuffer() const
 {
   return this->Framebuffer;
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionTargets::MatchSceneDepth(std::string& error)
+{
+  GLint binding = 0;
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &binding);
+  // The default framebuffer names its depth GL_DEPTH, an object GL_DEPTH_ATTACHMENT.
+  const GLenum attachment = binding == 0 ? GL_DEPTH : GL_DEPTH_ATTACHMENT;
+  GLint type = GL_NONE;
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+  if (type == GL_NONE)
+  {
+    error = "the framebuffer the scene is drawn into has no depth buffer";
+    return false;
+  }
+  GLint depthBits = 0;
+  GLint stencilBits = 0;
+  GLint component = GL_NONE;
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &stencilBits);
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &component);
+  int format = -2;
+  if (stencilBits == 8 && depthBits == 24)
+  {
+    format = -1;
+  }
+  else if (stencilBits == 0 && component == GL_FLOAT && depthBits == 32)
+  {
+    format = vtkTextureObject::Float32;
+  }
+  else if (stencilBits == 0 && component == GL_UNSIGNED_NORMALIZED)
+  {
+    format = depthBits == 16 ? vtkTextureObject::Fixed16
+      : depthBits == 24      ? vtkTextureObject::Fixed24
+      : depthBits == 32      ? vtkTextureObject::Fixed32
+                             : -2;
+  }
+  if (format == -2)
+  {
+    error = "the scene's depth buffer has a format the capture cannot match (" +
+      std::to_string(depthBits) + " depth bits, " + std::to_string(stencilBits) +
+      " stencil bits, " + (component == GL_FLOAT ? "float" : "fixed point") + ")";
+    return false;
+  }
+  if (format != this->SceneDepthFormat && this->Targets[SCENE_DEPTH])
+  {
+    this->Targets[SCENE_DEPTH] = nullptr; // released with its context by its destructor
+    this->TargetBytes[SCENE_DEPTH] = 0;
+  }
+  this->SceneDepthFormat = format;
+  return true;
 }
 
 //------------------------------------------------------------------------------

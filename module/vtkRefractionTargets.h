@@ -14,6 +14,7 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For members
 
+#include <string> // For MatchSceneDepth
 #include <vector> // For members
 
 class vtkOpenGLFramebufferObject;
@@ -38,7 +39,7 @@ public:
                        ///< and its -z_view in alpha, 0 where there is none
     BACK_Z,            ///< DEPTH32F: the depth test of the back capture
     SCENE_COLOR,       ///< RGBA8: the opaque scene (and SSP's refraction mask in alpha)
-    SCENE_DEPTH,       ///< DEPTH32F: the opaque scene's depth (window coordinates)
+    SCENE_DEPTH,       ///< the opaque scene's depth (window coordinates), in the scene's format
     GLASS_COLOR,       ///< RGBA16F: the shaded glass, which the composite puts into the scene:
                        ///< at each pixel, or with anti-aliasing at each pixel's lower-left
                        ///< corner (alpha 1 where the corner lies on the glass)
@@ -78,6 +79,16 @@ public:
   }
   vtkOpenGLFramebufferObject* GetFramebuffer() const;
 
+  /**
+   * Give SCENE_DEPTH the depth format of the framebuffer bound for reading (the one VTK
+   * draws the scene into). The scene is copied with one glBlitFramebuffer of colour and depth,
+   * which resolves a multisampled window (VTK's default) and, for depth, requires identical
+   * formats on both sides: DEPTH_COMPONENT16/24/32, 32F or DEPTH24_STENCIL8 here. Call before
+   * Update. Returns false, with the reason in `error`, for a framebuffer without depth or
+   * with a depth format no texture here can match.
+   */
+  bool MatchSceneDepth(std::string& error);
+
   /// Bytes of all allocated targets, as the driver reports their formats.
   unsigned long long GetBytes() const;
 
@@ -99,6 +110,7 @@ private:
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   int Width = 0;
   int Height = 0;
+  int SceneDepthFormat = -1; // vtkTextureObject's depth enum; -1: DEPTH24_STENCIL8
 };
 
 #endif

@@ -89,7 +89,6 @@ void Build(Scene& scene, double ior)
   scene.Renderer->SetPass(scene.Pass);
   scene.Pass->SetEnvironmentModeToBuiltin(); // without a cube map: the built-in sky (compared)
   scene.Window->SetSize(kSize, kSize);
-  scene.Window->SetMultiSamples(0);
   scene.Window->SetOffScreenRendering(1);
   scene.Window->AddRenderer(scene.Renderer);
   scene.Renderer->ResetCamera();

@@ -144,7 +144,6 @@ int main()
   renderer->SetEnvironmentUp(0.0, 0.0, 1.0);
   renderer->SetEnvironmentRight(1.0, 0.0, 0.0);
   vtkNew<vtkRenderWindow> window;
-  window->SetMultiSamples(0);
   window->SetOffScreenRendering(1);
   window->SetSize(Size, Size);
   window->AddRenderer(renderer);

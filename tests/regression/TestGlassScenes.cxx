@@ -185,18 +185,25 @@ int SSPCase(int argc, char* argv[])
   window->Render();
   auto cubeOnly = rftest::Grab(window);
   sphere->VisibilityOn();
+  auto green = [](vtkImageData* image, int x, int y) {
+    const double r = image->GetScalarComponentAsDouble(x, y, 0, 0);
+    const double g = image->GetScalarComponentAsDouble(x, y, 0, 1);
+    const double b = image->GetScalarComponentAsDouble(x, y, 0, 2);
+    return g > 150.0 && g > 2.0 * r && g > 2.0 * b;
+  };
   auto countLeaks = [&](vtkImageData* image) {
     int leaks = 0;
     for (int y = 0; y < kSize; ++y)
     {
       for (int x = 0; x < kSize; ++x)
       {
-        const bool cubeHere = cubeOnly->GetScalarComponentAsDouble(x, y, 0, 1) == 255.0 &&
-          cubeOnly->GetScalarComponentAsDouble(x, y, 0, 0) == 0.0;
-        const double r = image->GetScalarComponentAsDouble(x, y, 0, 0);
-        const double g = image->GetScalarComponentAsDouble(x, y, 0, 1);
-        const double b = image->GetScalarComponentAsDouble(x, y, 0, 2);
-        leaks += (!cubeHere && g > 150.0 && g > 2.0 * r && g > 2.0 * b) ? 1 : 0;
+        // Where the cube covers the pixel at all: in a multisampled window its edge pixels
+        // are blends of green and what lies behind, drawn so with or without glass.
+        const double r = cubeOnly->GetScalarComponentAsDouble(x, y, 0, 0);
+        const double g = cubeOnly->GetScalarComponentAsDouble(x, y, 0, 1);
+        const double b = cubeOnly->GetScalarComponentAsDouble(x, y, 0, 2);
+        const bool cubeHere = g > 32.0 && g > 2.0 * r && g > b;
+        leaks += (!cubeHere && green(image, x, y)) ? 1 : 0;
       }
     }
     return leaks;

@@ -103,7 +103,6 @@ vtkSmartPointer<vtkRenderWindow> MakeWindow(std::string& description)
   window = vtkSmartPointer<vtkRenderWindow>::New();
   window->SetSize(kSize, kSize);
   window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
   window->Render(); // creates and initializes the context
   description = "X";
   return window;

@@ -108,7 +108,6 @@ int main()
     window->SetSize(kSize, kSize);
     window->SetOffScreenRendering(1);
   }
-  window->SetMultiSamples(0);
   std::printf("window: %s\n", egl ? "EGL" : "X, off screen");
 
   // A cube seen across an edge: at IOR 1.5 part of the light meets the exit face beyond the

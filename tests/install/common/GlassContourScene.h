@@ -89,7 +89,6 @@ inline GlassContourScene BuildGlassContourScene(vtkRenderWindow* window, int siz
   scene.Renderer->ResetCameraClippingRange();
 
   window->SetSize(size, size);
-  window->SetMultiSamples(0);
   window->AddRenderer(scene.Renderer);
   return scene;
 }

@@ -12,6 +12,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkRefractionMeshes.h"
 #include "vtkRefractionPass.h"
 #include "vtkRefractionTargets.h"
 #include "vtkRenderState.h"
@@ -431,10 +432,7 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
   if (program->IsUniformUsed("rfHaveNormalDistance"))
   {
     vtkActor* actor = vtkActor::SafeDownCast(prop);
-    vtkPolyData* poly = vtkPolyData::SafeDownCast(
-      vtkOpenGLPolyDataMapper::SafeDownCast(mapper)->GetInputDataObject(0, 0));
-    const bool have =
-      poly && poly->GetPointData()->GetArray(vtkRefractionPass::GetISRDistanceArrayName());
+    const bool have = this->HasNormalDistance(prop);
     program->SetUniformi("rfHaveNormalDistance", have ? 1 : 0);
     // d_N is measured in model coordinates: scale it with the actor.
     double scale = 1.0;
@@ -455,22 +453,43 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
 }
 
 //------------------------------------------------------------------------------
-const vtkRefractionGeometryStage::Surface& vtkRefractionGeometryStage::GetSurface(vtkProp* prop)
+vtkRefractionGeometryStage::Surface vtkRefractionGeometryStage::GetSurface(vtkProp* prop)
 {
-  static const Surface unknown;
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  vtkMapper* mapper = actor ? actor->GetMapper() : nullptr;
-  vtkPolyData* poly = mapper ? vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
-  if (!poly)
+  // Composite data: the blocks together. The winding follows their total signed volume; the
+  // faces are culled only when every block is closed; the prop is open (a thin sheet) only
+  // when every block is (vtkRefractionMaterials says which blocks disagree).
+  Surface total;
+  double volume = 0.0;
+  for (const auto& block : vtkRefractionMeshes::GetBlocks(prop))
   {
-    return unknown;
+    const Surface& surface = this->GetMeshSurface(block.Mesh);
+    if (!surface.Polygons)
+    {
+      continue;
+    }
+    volume += surface.Volume;
+    total.Closed = total.Blocks == 0 ? surface.Closed : total.Closed && surface.Closed;
+    total.OpenBlocks += surface.Boundary ? 1 : 0;
+    ++total.Blocks;
+    total.Polygons = true;
   }
+  total.Volume = volume;
+  total.WindingSign = volume < 0.0 ? -1 : 1;
+  total.Boundary = total.Blocks > 0 && total.OpenBlocks == total.Blocks;
+  return total;
+}
+
+//------------------------------------------------------------------------------
+const vtkRefractionGeometryStage::Surface& vtkRefractionGeometryStage::GetMeshSurface(
+  vtkPolyData* poly)
+{
   auto cached = this->Surfaces.find(poly);
   if (cached != this->Surfaces.end() && cached->second.Time == poly->GetMTime())
   {
     return cached->second;
   }
   Surface& surface = this->Surfaces[poly];
+  surface = Surface();
   surface.Time = poly->GetMTime();
   // The signed volume of a closed mesh is positive when its polygons wind counter-clockwise
   // seen from outside (the OpenGL front face). Measured about the bounds' centre so that far
@@ -578,7 +597,9 @@ const vtkRefractionGeometryStage::Surface& vtkRefractionGeometryStage::GetSurfac
       edgeParity ^= keys[0][from] * keys[1][to] + keys[0][to] * keys[1][from];
     }
   }
+  surface.Volume = volume;
   surface.WindingSign = volume < 0.0 ? -1 : 1;
+  surface.Polygons = polys->GetNumberOfCells() > 0 || poly->GetNumberOfStrips() > 0;
   surface.Closed = edgeSum == 0 && poly->GetNumberOfStrips() == 0 && polys->GetNumberOfCells() > 0;
   surface.Boundary = edgeParity != 0 && poly->GetNumberOfStrips() == 0;
   return surface;
@@ -631,6 +652,24 @@ bool vtkRefractionGeometryStage::IsOutwardFront(vtkProp* prop)
 }
 
 //------------------------------------------------------------------------------
+bool vtkRefractionGeometryStage::HasNormalDistance(vtkProp* prop)
+{
+  if (vtkRefractionMeshes::IsComposite(prop))
+  {
+    return false; // the composite mapper's helpers upload no extra attributes (VTK 9.1)
+  }
+  const std::vector<vtkRefractionMeshes::Block> blocks = vtkRefractionMeshes::GetBlocks(prop);
+  for (const auto& block : blocks)
+  {
+    if (!block.Mesh->GetPointData()->GetArray(vtkRefractionPass::GetISRDistanceArrayName()))
+    {
+      return false;
+    }
+  }
+  return !blocks.empty();
+}
+
+//------------------------------------------------------------------------------
 void vtkRefractionGeometryStage::MapNormalDistance(vtkProp* prop)
 {
   vtkActor* actor = vtkActor::SafeDownCast(prop);
@@ -648,8 +687,15 @@ void vtkRefractionGeometryStage::MapNormalDistance(vtkProp* prop)
     }
   }
   const char* name = vtkRefractionPass::GetISRDistanceArrayName();
-  vtkPolyData* poly = vtkPolyData::SafeDownCast(mapper->GetInputDataObject(0, 0));
-  if (!poly || !poly->GetPointData()->GetArray(name))
+  if (vtkRefractionMeshes::IsComposite(prop))
+  {
+    vtkWarningMacro("ISR: glass actor " << actor
+                                        << " draws composite data: VTK 9.1's "
+                                           "vtkCompositePolyDataMapper2 uploads no extra vertex "
+                                           "attributes, so d_N cannot reach the shader; using "
+                                           "d_N = d_V (SIR's distance).");
+  }
+  else if (!this->HasNormalDistance(prop))
   {
     vtkWarningMacro("ISR: glass actor " << actor << " has no point array \"" << name
                                         << "\" (vtkISRDistanceFilter adds it); using d_N = d_V.");

@@ -71,7 +71,16 @@ public:
   int GetNumberOfDrawnProps() const { return this->NumberOfRenderedProps; }
 
   /// Whether a prop's surface has boundary edges (an open sheet: no back surface to find).
-  bool HasBoundary(vtkProp* prop) { return this->GetSurface(prop).Boundary; }
+  bool HasBoundary(vtkProp* prop, int* openBlocks = nullptr, int* blocks = nullptr)
+  {
+    const Surface surface = this->GetSurface(prop);
+    if (openBlocks && blocks)
+    {
+      *openBlocks = surface.OpenBlocks;
+      *blocks = surface.Blocks;
+    }
+    return surface.Boundary;
+  }
 
   void Render(const vtkRenderState* s) override;
   bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
@@ -104,11 +113,20 @@ private:
   struct Surface
   {
     vtkMTimeType Time = 0;
+    double Volume = 0.0; ///< signed, about the bounds' centre
     int WindingSign = 1;
+    bool Polygons = false; ///< any polygon or strip
     bool Closed = false;   ///< closed and consistently wound: faces can be culled
     bool Boundary = false; ///< an edge used once (an open surface)
+    int Blocks = 0;        ///< the prop's: meshes with polygons (composite data: blocks)
+    int OpenBlocks = 0;    ///< the prop's: of those, the ones with a boundary
   };
-  const Surface& GetSurface(vtkProp* prop);
+  /// The prop's meshes together (every block of composite data).
+  Surface GetSurface(vtkProp* prop);
+  /// One mesh, cached until it is modified.
+  const Surface& GetMeshSurface(vtkPolyData* poly);
+  /// Whether every mesh of the prop has ISR's d_N array.
+  bool HasNormalDistance(vtkProp* prop);
   /// Whether the prop's outward side is the GL front face on screen (winding and mirroring).
   bool IsOutwardFront(vtkProp* prop);
   void CullHiddenFaces(vtkProp* prop);

@@ -5,7 +5,9 @@
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataMapper.h"
+#include "vtkCellArray.h"
+#include "vtkMapper.h"
+#include "vtkRefractionMeshes.h"
 #include "vtkProp.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
@@ -17,8 +19,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <string>
 
 vtkStandardNewMacro(vtkRefractionGlassChecker);
+
+namespace
+{
+std::string Address(const void* pointer)
+{
+  std::ostringstream text;
+  text << pointer;
+  return text.str();
+}
+}
 
 //------------------------------------------------------------------------------
 void vtkRefractionGlassChecker::PrintSelf(ostream& os, vtkIndent indent)
@@ -110,30 +124,36 @@ void vtkRefractionGlassChecker::CheckOpacity(vtkProp* prop)
 //------------------------------------------------------------------------------
 int vtkRefractionGlassChecker::CheckGlassProp(vtkProp* prop)
 {
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  vtkPolyDataMapper* mapper = actor ? vtkPolyDataMapper::SafeDownCast(actor->GetMapper()) : nullptr;
-  vtkPolyData* poly = nullptr;
+  vtkMapper* mapper = vtkRefractionMeshes::GetMapper(prop);
   if (mapper && mapper->GetNumberOfInputConnections(0) > 0)
   {
     // What the mapper is about to draw (as GetBounds does; free when up to date).
     mapper->Update();
-    poly = mapper->GetInput();
   }
+  const bool composite = vtkRefractionMeshes::IsComposite(prop);
+  const std::vector<vtkRefractionMeshes::Block> blocks =
+    vtkRefractionMeshes::GetBlocks(prop, true);
   // The verdict depends on the index and on the data only. Not on the prop's or its keys'
   // modification times: every render adds and removes the pass on the keys, and moving an
   // actor should not rescan its points.
   const double ior = vtkRefractionPass::GetIndexOfRefraction(prop);
-  const vtkMTimeType time = poly ? poly->GetMTime() : 0;
+  vtkDataObject* data = mapper ? mapper->GetInputDataObject(0, 0) : nullptr;
+  vtkMTimeType time = data ? data->GetMTime() : 0;
+  for (const auto& block : blocks)
+  {
+    time = std::max(time, block.Mesh->GetMTime());
+  }
   auto cached = this->GlassChecks.find(prop);
   if (cached != this->GlassChecks.end() && cached->second.Time == time &&
-    cached->second.Data == poly &&
+    cached->second.Data == data && cached->second.Blocks == blocks.size() &&
     (cached->second.IOR == ior || (std::isnan(cached->second.IOR) && std::isnan(ior))))
   {
     return cached->second.Verdict;
   }
   GlassCheck& check = this->GlassChecks[prop];
   check.Time = time;
-  check.Data = poly;
+  check.Data = data;
+  check.Blocks = blocks.size();
   check.IOR = ior;
   check.Verdict = GLASS_OK;
 
@@ -147,22 +167,86 @@ int vtkRefractionGlassChecker::CheckGlassProp(vtkProp* prop)
     check.Verdict = GLASS_AS_ORDINARY;
     return check.Verdict;
   }
-  if (!poly)
+  if (!data)
   {
-    return check.Verdict; // not a polydata actor: nothing to check here
+    return check.Verdict; // no data set (not a polydata actor): nothing to check here
   }
-  const vtkIdType points = poly->GetNumberOfPoints();
-  const vtkIdType surfaces = poly->GetNumberOfPolys() + poly->GetNumberOfStrips();
-  if (points == 0 || poly->GetNumberOfCells() == 0)
+  const std::string name = std::string(prop->GetClassName()) + " " + Address(prop);
+  vtkIdType points = 0;
+  vtkIdType cells = 0;
+  vtkIdType surfaces = 0;
+  vtkIdType verts = 0;
+  vtkIdType lines = 0;
+  for (const auto& block : blocks)
   {
-    vtkWarningMacro("Glass prop " << prop->GetClassName() << " " << prop
-                                  << " has an empty vtkPolyData (" << points << " points, "
-                                  << poly->GetNumberOfCells() << " cells): nothing to draw.");
+    const std::string where = vtkRefractionMeshes::DescribeBlock(block, composite);
+    std::string error;
+    if (!CheckMesh(block.Mesh, error))
+    {
+      vtkErrorMacro("Glass prop " << name << ": " << where << "its data " << error
+                                  << ": the prop is not drawn.");
+      check.Verdict = GLASS_SKIPPED;
+      return check.Verdict;
+    }
+    points += block.Mesh->GetNumberOfPoints();
+    cells += block.Mesh->GetNumberOfCells();
+    surfaces += block.Mesh->GetNumberOfPolys() + block.Mesh->GetNumberOfStrips();
+    verts += block.Mesh->GetNumberOfVerts();
+    lines += block.Mesh->GetNumberOfLines();
+  }
+  if (points == 0 || cells == 0)
+  {
+    vtkWarningMacro("Glass prop " << name << " has an empty "
+                                  << (composite ? "composite data set (" + std::to_string(blocks.size()) + " polydata blocks, " : "vtkPolyData (")
+                                  << points << " points, " << cells << " cells): nothing to draw.");
     check.Verdict = GLASS_SKIPPED;
     return check.Verdict;
   }
-  // One scan per modification: NaN or infinite coordinates would reach the capture as NaN
-  // depths and normals, which the filtered normal texture spreads to the neighbours.
+  if (surfaces == 0)
+  {
+    vtkWarningMacro("Glass prop " << name << " has no polygons (" << verts << " vertices, "
+                                  << lines
+                                  << " lines): glass needs surfaces; it is drawn as an ordinary "
+                                     "actor.");
+    check.Verdict = GLASS_AS_ORDINARY;
+  }
+  return check.Verdict;
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionGlassChecker::CheckMesh(vtkPolyData* poly, std::string& error)
+{
+  // One scan per modification. A cell that names a point that does not exist would make every
+  // reader of the connectivity (the mapper's index buffer, the surface model) read beyond the
+  // points; NaN or infinite coordinates would reach the capture as NaN depths and normals,
+  // which the filtered normal texture spreads to the neighbours.
+  const vtkIdType points = poly->GetNumberOfPoints();
+  vtkCellArray* kinds[4] = { poly->GetVerts(), poly->GetLines(), poly->GetPolys(),
+    poly->GetStrips() };
+  const char* kindNames[4] = { "vertex", "line", "polygon", "triangle strip" };
+  for (int k = 0; k < 4; ++k)
+  {
+    vtkCellArray* cells = kinds[k];
+    if (!cells || cells->GetNumberOfCells() == 0)
+    {
+      continue;
+    }
+    double range[2];
+    cells->GetConnectivityArray()->GetRange(range, 0);
+    if (range[0] < 0.0 || range[1] >= static_cast<double>(points))
+    {
+      std::ostringstream text;
+      text << "has a " << kindNames[k] << " cell naming point "
+           << static_cast<long long>(range[0] < 0.0 ? range[0] : range[1]) << " of " << points
+           << " points (ids 0 to " << points - 1 << ")";
+      error = text.str();
+      return false;
+    }
+  }
+  if (points == 0)
+  {
+    return true;
+  }
   vtkDataArray* coordinates = poly->GetPoints()->GetData();
   vtkIdType bad = 0;
   vtkIdType first = -1;
@@ -182,22 +266,12 @@ int vtkRefractionGlassChecker::CheckGlassProp(vtkProp* prop)
   }
   if (bad > 0)
   {
-    vtkErrorMacro("Glass prop " << prop->GetClassName() << " " << prop << " has " << bad
-                                << " of " << points
-                                << " points with NaN or infinite coordinates (the first: point "
-                                << first << " = (" << firstPoint[0] << ", " << firstPoint[1]
-                                << ", " << firstPoint[2] << ")): it is not drawn.");
-    check.Verdict = GLASS_SKIPPED;
-    return check.Verdict;
+    std::ostringstream text;
+    text << "has " << bad << " of " << points
+         << " points with NaN or infinite coordinates (the first: point " << first << " = ("
+         << firstPoint[0] << ", " << firstPoint[1] << ", " << firstPoint[2] << "))";
+    error = text.str();
+    return false;
   }
-  if (surfaces == 0)
-  {
-    vtkWarningMacro("Glass prop " << prop->GetClassName() << " " << prop << " has no polygons ("
-                                  << poly->GetNumberOfVerts() << " vertices, "
-                                  << poly->GetNumberOfLines()
-                                  << " lines): glass needs surfaces; it is drawn as an ordinary "
-                                     "actor.");
-    check.Verdict = GLASS_AS_ORDINARY;
-  }
-  return check.Verdict;
+  return true;
 }

@@ -13,8 +13,10 @@
 #include "vtkObject.h"
 
 #include <map>    // For members
+#include <string> // For CheckMesh
 #include <vector> // For SplitProps
 
+class vtkPolyData;
 class vtkProp;
 class vtkRenderState;
 
@@ -48,10 +50,13 @@ private:
   {
     vtkMTimeType Time = 0; ///< the data's
     const void* Data = nullptr;
+    size_t Blocks = 0;
     double IOR = 0.0;
     int Verdict = GLASS_OK;
   };
   int CheckGlassProp(vtkProp* prop);
+  /// Points named by cells exist, coordinates are finite; else false and why in `error`.
+  static bool CheckMesh(vtkPolyData* poly, std::string& error);
   // Says once per prop that a translucent glass actor is left to VTK's translucent pass.
   void CheckOpacity(vtkProp* prop);
   std::map<vtkProp*, GlassCheck> GlassChecks;

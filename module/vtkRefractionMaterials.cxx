@@ -3,6 +3,8 @@
 #include "vtkActor.h"
 #include "vtkBoundingBox.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkCompositePolyDataMapper2.h"
 #include "vtkDataSet.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
@@ -11,7 +13,9 @@
 #include "vtkPointData.h"
 #include "vtkProperty.h"
 #include "vtkRefractionGeometryStage.h"
+#include "vtkRefractionMeshes.h"
 #include "vtkRefractionPass.h"
+#include "vtkPolyData.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,11 +41,31 @@ bool HasDataColour(vtkProp* prop)
   {
     return true;
   }
+  // Per-block colours of composite data (vtkCompositeDataDisplayAttributes), or scalars in
+  // the data (any block).
   vtkMapper* mapper = actor->GetMapper();
-  vtkDataSet* data = mapper ? vtkDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0)) : nullptr;
-  return mapper && data && mapper->GetScalarVisibility() &&
-    (data->GetPointData()->GetScalars() || data->GetCellData()->GetScalars() ||
-      (mapper->GetArrayName() && mapper->GetArrayName()[0] != 0));
+  auto* composite = vtkCompositePolyDataMapper2::SafeDownCast(mapper);
+  if (composite && composite->GetCompositeDataDisplayAttributes() &&
+    composite->GetCompositeDataDisplayAttributes()->HasBlockColors())
+  {
+    return true;
+  }
+  if (!mapper || !mapper->GetScalarVisibility())
+  {
+    return false;
+  }
+  if (mapper->GetArrayName() && mapper->GetArrayName()[0] != 0)
+  {
+    return true;
+  }
+  for (const auto& block : vtkRefractionMeshes::GetBlocks(prop))
+  {
+    if (block.Mesh->GetPointData()->GetScalars() || block.Mesh->GetCellData()->GetScalars())
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 // The diagonal of a prop's bounding box (0 without bounds).
@@ -79,6 +103,8 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
   this->Sheet.clear();
   this->DataColour = false;
   std::vector<vtkProp*> sheets;
+  std::vector<vtkProp*> mixed; // composite data with open and closed blocks
+  std::vector<std::pair<int, int>> mixedCounts;
   double largest = 0.0;
   vtkBoundingBox all;
   for (vtkProp* prop : glass)
@@ -97,8 +123,16 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
     const int model = keys && keys->Has(vtkRefractionPass::SURFACE_MODEL())
       ? keys->Get(vtkRefractionPass::SURFACE_MODEL())
       : vtkRefractionPass::SURFACE_AUTO;
+    int openBlocks = 0;
+    int blocks = 0;
+    const bool open = surfaces->HasBoundary(prop, &openBlocks, &blocks);
     const bool sheet = model == vtkRefractionPass::SURFACE_THIN_SHEET ||
-      (model == vtkRefractionPass::SURFACE_AUTO && surfaces->HasBoundary(prop));
+      (model == vtkRefractionPass::SURFACE_AUTO && open);
+    if (model == vtkRefractionPass::SURFACE_AUTO && openBlocks > 0 && openBlocks < blocks)
+    {
+      mixed.push_back(prop);
+      mixedCounts.emplace_back(openBlocks, blocks);
+    }
     const double diagonal = Diagonal(prop);
     largest = std::max(largest, diagonal);
     double thickness = 0.0;
@@ -136,4 +170,19 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
                                        "sheets (vtkRefractionPass::SetSurfaceModel to choose).");
   }
   this->SheetsReported = sheets;
+  if (!mixed.empty() && mixed != this->MixedReported)
+  {
+    std::ostringstream names;
+    for (size_t i = 0; i < mixed.size(); ++i)
+    {
+      names << " " << mixed[i]->GetClassName() << " " << mixed[i] << " (" << mixedCounts[i].first
+            << " of " << mixedCounts[i].second << " blocks open)";
+    }
+    vtkWarningMacro("Glass prop(s)" << names.str()
+                                    << " hold open and closed blocks: the surface model is "
+                                       "decided per actor, so all are drawn as solids (put the "
+                                       "open blocks in an actor of their own to draw them as "
+                                       "thin sheets).");
+  }
+  this->MixedReported = mixed;
 }

@@ -69,6 +69,7 @@ private:
   double LargestDiagonal = 0.0;
   double ExtentDiagonal = 0.0;
   std::vector<vtkProp*> SheetsReported;
+  std::vector<vtkProp*> MixedReported; ///< composite props with open and closed blocks
 };
 
 #endif

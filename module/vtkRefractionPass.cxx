@@ -367,12 +367,13 @@ void vtkRefractionPass::Render(const vtkRenderState* s)
   std::vector<vtkProp*> glass;
   std::vector<vtkProp*> others;
   this->GlassChecker->SplitProps(s, glass, &others);
-  if (glass.empty())
+  if (glass.empty() && static_cast<int>(others.size()) == s->GetPropArrayCount())
   {
     this->DelegatePass->Render(s);
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
     return;
   }
+  // Glass props refused (vtkRefractionGlassChecker) are in neither list: not drawn at all.
   vtkRenderState othersState(s->GetRenderer());
   othersState.SetFrameBuffer(s->GetFrameBuffer());
   othersState.SetRequiredKeys(s->GetRequiredKeys());
@@ -389,7 +390,7 @@ int vtkRefractionPass::RenderOpaqueAndGlass(const vtkRenderState* s, vtkRenderPa
   std::vector<vtkProp*> others;
   this->GlassChecker->SplitProps(s, glass, &others);
   this->NumberOfRenderedProps = 0;
-  if (glass.empty())
+  if (glass.empty() && static_cast<int>(others.size()) == s->GetPropArrayCount())
   {
     opaque->Render(s);
     return opaque->GetNumberOfRenderedProps();

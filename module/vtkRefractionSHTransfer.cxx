@@ -12,6 +12,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkRefractionMeshes.h"
 #include "vtkRefractionPass.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -79,7 +80,13 @@ bool vtkRefractionSHTransfer::Check(const std::vector<vtkProp*>& glass, std::str
     vtkDataArray* ids = poly ? poly->GetPointData()->GetArray(GetVertexIdArrayName()) : nullptr;
     vtkDataArray* settings =
       poly ? poly->GetFieldData()->GetArray(GetSettingsArrayName()) : nullptr;
-    if (!transfer || !ids || !settings || settings->GetNumberOfTuples() < 4 ||
+    if (vtkRefractionMeshes::IsComposite(prop))
+    {
+      why << "glass prop " << prop
+          << " draws composite data: VTK 9.1's vtkCompositePolyDataMapper2 uploads no extra "
+             "vertex attributes, which the SH method needs (give it a vtkPolyData)";
+    }
+    else if (!transfer || !ids || !settings || settings->GetNumberOfTuples() < 4 ||
       OrderOf(transfer->GetNumberOfComponents()) < 0 ||
       transfer->GetNumberOfTuples() != poly->GetNumberOfPoints())
     {

@@ -151,11 +151,29 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
   this->LargestDiagonal = largest;
   this->ExtentDiagonal = all.IsValid() ? all.GetDiagonalLength() : 0.0;
   // The tint: light keeps the data's colour after this distance inside the glass.
+  // A distance in world units that belongs to the material: derived once from the glass's
+  // size when the user gives none, then kept, so that a deforming object does not change the
+  // colour of its parts that stay put (re-derived only when the user's setting changes).
+  if (absorptionDistance != this->RequestedAbsorptionDistance)
+  {
+    this->RequestedAbsorptionDistance = absorptionDistance;
+    this->DerivedAbsorptionDistance = 0.0;
+  }
   this->AbsorptionDistance = 0.0;
   if (this->DataColour)
   {
-    this->AbsorptionDistance = absorptionDistance > 0.0 ? absorptionDistance : 0.5 * largest;
-    this->AbsorptionDistance = this->AbsorptionDistance > 0.0 ? this->AbsorptionDistance : 1.0;
+    if (absorptionDistance > 0.0)
+    {
+      this->AbsorptionDistance = absorptionDistance;
+    }
+    else
+    {
+      if (!(this->DerivedAbsorptionDistance > 0.0))
+      {
+        this->DerivedAbsorptionDistance = largest > 0.0 ? 0.5 * largest : 1.0;
+      }
+      this->AbsorptionDistance = this->DerivedAbsorptionDistance;
+    }
   }
   // Say once which props were taken for thin sheets (until the set changes).
   if (!sheets.empty() && sheets != this->SheetsReported)

@@ -66,6 +66,8 @@ private:
   std::vector<float> Sheet;
   bool DataColour = false;
   double AbsorptionDistance = 0.0;
+  double RequestedAbsorptionDistance = 0.0; ///< the pass's setting the last Update saw
+  double DerivedAbsorptionDistance = 0.0;   ///< kept while the setting stays 0
   double LargestDiagonal = 0.0;
   double ExtentDiagonal = 0.0;
   std::vector<vtkProp*> SheetsReported;

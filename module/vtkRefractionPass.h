@@ -316,7 +316,10 @@ public:
    * measured path |P2 - P1| keeps colour^(|P2 - P1| / AbsorptionDistance), so thick parts are
    * deeper in colour. White glass (the default actor colour) stays clear, and when no glass
    * prop has a colour, scalar colours or edges the colour is not even captured.
-   * AbsorptionDistance 0 (default): half the largest bounding-box diagonal of the glass props.
+   * AbsorptionDistance is a length in world units that belongs to the material. 0 (default):
+   * half the largest bounding-box diagonal of the glass props in the first frame that shows
+   * data colour, then kept (a deforming object keeps the colour of its parts that do not move);
+   * after a change of the setting back to 0 the next frame derives it anew.
    */
   vtkSetMacro(DataColour, bool);
   vtkGetMacro(DataColour, bool);

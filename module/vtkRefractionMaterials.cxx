@@ -101,6 +101,8 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
   this->BlueIOR.clear();
   this->Dispersion = false;
   this->Sheet.clear();
+  this->Highlights.clear();
+  this->HasHighlights = false;
   this->DataColour = false;
   std::vector<vtkProp*> sheets;
   std::vector<vtkProp*> mixed; // composite data with open and closed blocks
@@ -146,6 +148,20 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
       }
     }
     this->Sheet.push_back(static_cast<float>(thickness));
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    vtkProperty* property = actor ? actor->GetProperty() : nullptr;
+    const double specular = property ? property->GetSpecular() : 0.0;
+    double specularColour[3] = { 1.0, 1.0, 1.0 };
+    if (property)
+    {
+      property->GetSpecularColor(specularColour);
+    }
+    for (double c : specularColour)
+    {
+      this->Highlights.push_back(static_cast<float>(specular * c));
+    }
+    this->Highlights.push_back(static_cast<float>(property ? property->GetSpecularPower() : 1.0));
+    this->HasHighlights = this->HasHighlights || specular > 0.0;
     this->DataColour = this->DataColour || (dataColour && HasDataColour(prop));
   }
   this->LargestDiagonal = largest;

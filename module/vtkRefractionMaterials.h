@@ -50,6 +50,11 @@ public:
   double GetLargestDiagonal() const { return this->LargestDiagonal; }
   /// The diagonal of the bounding box of all the glass props together.
   double GetExtentDiagonal() const { return this->ExtentDiagonal; }
+  /// 4 floats per material: the highlights' colour (the actor's Specular times its
+  /// SpecularColor) and SpecularPower.
+  const std::vector<float>& GetHighlights() const { return this->Highlights; }
+  /// Whether any glass prop has highlights (Specular above 0).
+  bool GetHasHighlights() const { return this->HasHighlights; }
 
 protected:
   vtkRefractionMaterials() = default;
@@ -64,6 +69,8 @@ private:
   std::vector<float> BlueIOR;
   bool Dispersion = false;
   std::vector<float> Sheet;
+  std::vector<float> Highlights;
+  bool HasHighlights = false;
   bool DataColour = false;
   double AbsorptionDistance = 0.0;
   double RequestedAbsorptionDistance = 0.0; ///< the pass's setting the last Update saw

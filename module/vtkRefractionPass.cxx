@@ -21,6 +21,7 @@
 #include "vtkRefractionGeometryStage.h"
 #include "vtkRefractionGlassChecker.h"
 #include "vtkRefractionLayerPack.h"
+#include "vtkRefractionLights.h"
 #include "vtkRefractionMaterials.h"
 #include "vtkRefractionMethod.h"
 #include "vtkRefractionOpaqueStep.h"
@@ -535,6 +536,12 @@ void vtkRefractionPass::RenderGlass(
     frame.BlueIndex = &this->Materials->GetBlueIndex();
   }
   frame.BoundsDepthRange = this->BoundsDepthRange;
+  if (this->Materials->GetHasHighlights())
+  {
+    this->Lights->Update(ren);
+    frame.Highlights = &this->Materials->GetHighlights();
+    frame.Lights = this->Lights;
+  }
   if (!this->ShadeStage->Prepare(ren, method, this, frame, false))
   {
     return;

@@ -50,6 +50,7 @@ class vtkRefractionDepthRange;
 class vtkRefractionGeometryStage;
 class vtkRefractionGlassChecker;
 class vtkRefractionLayerPack;
+class vtkRefractionLights;
 class vtkRefractionMaterials;
 class vtkRefractionMethod;
 class vtkRefractionOpaqueStep;
@@ -129,6 +130,11 @@ public:
   /**
    * Mark a prop as glass with an index of refraction (1.5 by default). An invalid index
    * (not finite, or <= 0) is reported and the prop is left unmarked. Returns success.
+   * Glass shows the renderer's lights (headlight, light kit, scene lights) as highlights
+   * where the actor's property has a Specular above 0 (VTK's default is 0: none), in its
+   * SpecularColor with its SpecularPower, weighted by the glass's Fresnel reflectance as a
+   * small bright source is mirrored by glass (none at index 1). Specular 1 and SpecularPower
+   * 100 are a good start.
    */
   static bool MakeGlass(vtkProp* prop, double indexOfRefraction = 1.5);
   /// Unmark a prop; it renders as an ordinary actor again.
@@ -458,6 +464,7 @@ protected:
   vtkNew<vtkRefractionLayerPack> LayerPack;
   vtkNew<vtkRefractionShadeStage> ShadeStage;
   vtkNew<vtkRefractionMaterials> Materials;
+  vtkNew<vtkRefractionLights> Lights;
   vtkSmartPointer<vtkRefractionMethod> MethodObject;
   int MethodObjectType = -1;
   std::unique_ptr<vtkOpenGLRenderTimer> Timers[TIMED_STAGE_COUNT];

@@ -13,6 +13,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLTexture.h"
 #include "vtkPointData.h"
+#include "vtkRefractionLights.h"
 #include "vtkRefractionMethod.h"
 #include "vtkRefractionPass.h"
 #include "vtkRefractionTargets.h"
@@ -129,6 +130,11 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
   if (frame.RedIndex && frame.BlueIndex)
   {
     defines << "#define RF_DISPERSION\n";
+  }
+  if (frame.Highlights && frame.Lights && frame.Lights->GetNumberOfLights() > 0)
+  {
+    defines << "#define RF_HIGHLIGHTS\n#define RF_MAX_LIGHTS "
+            << vtkRefractionLights::MaximumLights << "\n";
   }
   if (frame.SceneRefraction)
   {
@@ -261,6 +267,19 @@ void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* 
   if (shader->IsUniformUsed("rfMaterialSheet"))
   {
     shader->SetUniform1fv("rfMaterialSheet", MaximumMaterials, sheet.data());
+  }
+  if (frame.Highlights && frame.Lights && shader->IsUniformUsed("rfMaterialHighlight"))
+  {
+    std::vector<float> highlights(*frame.Highlights);
+    highlights.resize(4 * MaximumMaterials, 0.f);
+    shader->SetUniform4fv("rfMaterialHighlight", MaximumMaterials, highlights.data());
+    std::vector<float> positions(frame.Lights->GetPositions());
+    std::vector<float> colours(frame.Lights->GetColours());
+    positions.resize(4 * vtkRefractionLights::MaximumLights, 0.f);
+    colours.resize(3 * vtkRefractionLights::MaximumLights, 0.f);
+    shader->SetUniformi("rfLightCount", frame.Lights->GetNumberOfLights());
+    shader->SetUniform4fv("rfLightPosition", vtkRefractionLights::MaximumLights, positions.data());
+    shader->SetUniform3fv("rfLightColour", vtkRefractionLights::MaximumLights, colours.data());
   }
   shader->SetUniformi("rfParallel", frame.Parallel ? 1 : 0);
   shader->SetUniformMatrix("rfVCDC", frame.Projection);

@@ -25,6 +25,7 @@ class vtkImageData;
 class vtkMatrix4x4;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderer;
+class vtkRefractionLights;
 class vtkRefractionMethod;
 class vtkRefractionPass;
 class vtkRefractionTargets;
@@ -62,6 +63,8 @@ public:
     double Background[3] = { 0.0, 0.0, 0.0 };
     double Background2[3] = { 0.0, 0.0, 0.0 }; // = Background when it is not a gradient
     const double* BoundsDepthRange = nullptr;
+    const std::vector<float>* Highlights = nullptr; // 4 per material (nullptr: none)
+    const vtkRefractionLights* Lights = nullptr;     // the renderer's, in view space
   };
 
   /// The shading program for the method and the pass's settings; false when it does not build.

@@ -204,6 +204,40 @@ float rfMaterialIndexOfRefraction(int material, int channel)
 
 //VTK::Output::Dec
 
+#ifdef RF_HIGHLIGHTS
+uniform vec4 rfMaterialHighlight[RF_MAX_MATERIALS]; // Specular * SpecularColor, SpecularPower
+uniform int rfLightCount;
+uniform vec4 rfLightPosition[RF_MAX_LIGHTS]; // view space: w = 0 direction, w = 1 position
+uniform vec3 rfLightColour[RF_MAX_LIGHTS];   // colour times intensity
+
+// The renderer's lights mirrored by the front surface at P (view space, V from the eye, N1
+// towards it), as glass mirrors a small bright source: the Fresnel reflectance F of the view
+// ray (the angle at the highlight's peak) times a normalized Phong lobe (SpecularPower n,
+// (n + 2) / 2 at its peak: a small source is much brighter than the sky around it), in the
+// actor's Specular times SpecularColor. Reflected, so neither tinted nor refracted; none at
+// index 1 (F = 0).
+vec3 rfHighlight(vec3 P, vec3 V, vec3 N1, int material, float F)
+{
+  vec4 highlight = rfMaterialHighlight[material];
+  vec3 R = reflect(V, N1);
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < RF_MAX_LIGHTS; ++i)
+  {
+    if (i >= rfLightCount)
+    {
+      break;
+    }
+    vec4 light = rfLightPosition[i];
+    vec3 L = normalize(light.w > 0.5 ? light.xyz - P : light.xyz);
+    if (dot(N1, L) > 0.0)
+    {
+      sum += rfLightColour[i] * pow(max(dot(R, L), 0.0), highlight.a);
+    }
+  }
+  return highlight.rgb * (F * 0.5 * (highlight.a + 2.0)) * sum;
+}
+#endif
+
 // One ray through texture coordinate tc that meets the glass (material index material) at
 // view depth -z = depth with the viewer-facing unit normal N1, for the indices of one colour
 // channel: its colour, and for the debug output the exit point, exit direction and TIR flags.
@@ -330,6 +364,9 @@ rfRay rfShadeRay(vec2 tc, vec3 N1, float depth, int material, int channel)
   transmitted *= pow(max(tint, vec3(1.0 / 255.0)), vec3(path / rfAbsorptionDistance));
 #endif
   ray.colour = F * rfEnvironment(reflect(V, N1)) + (1.0 - F) * transmitted;
+#ifdef RF_HIGHLIGHTS
+  ray.colour += rfHighlight(P, V, N1, material, rfFresnelWeight(-dot(V, N1), etaIn));
+#endif
 #endif
   return ray;
 }

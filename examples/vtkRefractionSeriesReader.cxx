@@ -2,6 +2,8 @@
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
 #include <vtkCommand.h>
 #include <vtkDataObject.h>
 #include <vtkDataSet.h>
@@ -13,10 +15,12 @@
 #include <vtkOBJReader.h>
 #include <vtkObjectFactory.h>
 #include <vtkPLYReader.h>
+#include <vtkPolyData.h>
 #include <vtkRectilinearGrid.h>
 #include <vtkSTLReader.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkStructuredGrid.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
 #include <vtkXMLImageDataReader.h>
@@ -31,11 +35,49 @@
 #include <algorithm>
 #include <cstdlib>
 #include <numeric>
+#include <string>
+#include <utility>
+#include <vector>
 
 vtkStandardNewMacro(vtkRefractionSeriesReader);
 
 namespace
 {
+// Whether every cell names points the data set has: a face "f 1 2 99" of an OBJ file over
+// three vertices is read as it stands, and every filter and mapper after it (normals, bounds,
+// the index buffer) would read or write beyond the points.
+bool CheckConnectivity(vtkDataSet* data, std::string& error)
+{
+  std::vector<std::pair<const char*, vtkCellArray*>> arrays;
+  if (auto* poly = vtkPolyData::SafeDownCast(data))
+  {
+    arrays = { { "vertex", poly->GetVerts() }, { "line", poly->GetLines() },
+      { "polygon", poly->GetPolys() }, { "triangle strip", poly->GetStrips() } };
+  }
+  else if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data))
+  {
+    arrays = { { "", grid->GetCells() } };
+  }
+  const vtkIdType points = data->GetNumberOfPoints();
+  for (const auto& kind : arrays)
+  {
+    if (!kind.second || kind.second->GetNumberOfCells() == 0)
+    {
+      continue;
+    }
+    double range[2];
+    kind.second->GetConnectivityArray()->GetRange(range, 0);
+    if (range[0] < 0.0 || range[1] >= static_cast<double>(points))
+    {
+      error = std::string("a ") + kind.first + (kind.first[0] ? " " : "") + "cell names point (counting from 0) " +
+        std::to_string(static_cast<long long>(range[0] < 0.0 ? range[0] : range[1])) +
+        ", but there are " + std::to_string(points) + " points";
+      return false;
+    }
+  }
+  return true;
+}
+
 std::string Extension(const std::string& path)
 {
   return vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path));
@@ -290,6 +332,11 @@ bool vtkRefractionSeriesReader::ReadIndex(size_t index)
     return this->Fail("cannot read '" + path + "': " +
       (!readerError.empty() ? readerError
                             : std::string(dataSet ? "it holds no points" : "not a data set")));
+  }
+  std::string broken;
+  if (!CheckConnectivity(dataSet, broken))
+  {
+    return this->Fail("cannot use '" + path + "': " + broken);
   }
   this->Loaded = data;
   this->LoadedIndex = index;

@@ -7,6 +7,7 @@
 //                              viewer), referenced by a ParaView collection
 //   wave_000k.vtp              4 contoured time steps of the wave equation, a numbered series
 //   broken.vtp                 not XML at all
+//   missing_point.obj          a face naming vertex 99 of 3 (f 1 2 99)
 //   notes.xyz                  an unknown type
 #include "vtkMetaballsSource.h"
 #include "vtkWaveEquationSource.h"
@@ -148,7 +149,8 @@ int main(int argc, char* argv[])
 
   if (!WriteText(folder + "/blobs.pvd", collection) ||
     !WriteText(folder + "/broken.vtp", "this is not a VTK file\n") ||
-    !WriteText(folder + "/notes.xyz", "1 2 3\n"))
+    !WriteText(folder + "/notes.xyz", "1 2 3\n") ||
+    !WriteText(folder + "/missing_point.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n"))
   {
     return EXIT_FAILURE;
   }

@@ -1425,10 +1425,14 @@ void SetGlass(const Scene& scene, bool glass)
 {
   if (glass)
   {
+    // No highlights (MakeGlass's default for an actor at VTK's specular defaults): the
+    // reference traces no light sources, and the rows stay comparable with earlier runs.
     vtkRefractionPass::MakeGlass(scene.Actor, 1.5);
+    scene.Actor->GetProperty()->SetSpecular(0.0);
     if (scene.Inner)
     {
       vtkRefractionPass::MakeGlass(scene.Inner, 1.9);
+      scene.Inner->GetProperty()->SetSpecular(0.0);
     }
     return;
   }

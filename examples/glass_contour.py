@@ -71,9 +71,6 @@ def build_scene(size=300, method="dir", index_of_refraction=1.5):
     glass_actor.SetMapper(glass_mapper)
     if not vtkRefractionPass.MakeGlass(glass_actor, index_of_refraction):
         raise ValueError("index of refraction %r rejected" % index_of_refraction)
-    # The lights' highlights show the glass's shape over a plain background.
-    glass_actor.GetProperty().SetSpecular(1.0)
-    glass_actor.GetProperty().SetSpecularPower(100.0)
 
     cone = vtkConeSource()
     cone.SetResolution(48)

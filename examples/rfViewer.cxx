@@ -321,9 +321,6 @@ int BuildPipeline(const rfViewerOptions& o, const rfViewerSettings& s, Scene& sc
   scene.Glass = vtkSmartPointer<vtkActor>::New();
   scene.Glass->SetMapper(mapper);
   vtkRefractionPass::MakeGlass(scene.Glass, s.IOR);
-  // The lights' highlights show the glass's shape over a plain background.
-  scene.Glass->GetProperty()->SetSpecular(1.0);
-  scene.Glass->GetProperty()->SetSpecularPower(100.0);
   if (s.Dispersion.size() == 3)
   {
     vtkRefractionPass::SetDispersion(

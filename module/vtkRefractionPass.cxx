@@ -1,5 +1,6 @@
 #include "vtkRefractionPass.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -17,6 +18,7 @@
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLTexture.h"
+#include "vtkProperty.h"
 #include "vtkRefractionDepthRange.h"
 #include "vtkRefractionGeometryStage.h"
 #include "vtkRefractionGlassChecker.h"
@@ -158,6 +160,15 @@ bool vtkRefractionPass::MakeGlass(vtkProp* prop, double indexOfRefraction)
   vtkInformation* keys = GetOrCreateKeys(prop);
   keys->Set(GLASS(), 1);
   keys->Set(INDEX_OF_REFRACTION(), indexOfRefraction);
+  // Glass shows its shape by the highlights of the renderer's lights: an actor whose property
+  // still has VTK's default specular terms gets glass's (set Specular 0 after this for none).
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  vtkProperty* property = actor ? actor->GetProperty() : nullptr;
+  if (property && property->GetSpecular() == 0.0 && property->GetSpecularPower() == 1.0)
+  {
+    property->SetSpecular(DefaultGlassSpecular);
+    property->SetSpecularPower(DefaultGlassSpecularPower);
+  }
   prop->Modified();
   return true;
 }

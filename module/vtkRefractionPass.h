@@ -130,13 +130,15 @@ public:
   /**
    * Mark a prop as glass with an index of refraction (1.5 by default). An invalid index
    * (not finite, or <= 0) is reported and the prop is left unmarked. Returns success.
-   * Glass shows the renderer's lights (headlight, light kit, scene lights) as highlights
-   * where the actor's property has a Specular above 0 (VTK's default is 0: none), in its
-   * SpecularColor with its SpecularPower, weighted by the glass's Fresnel reflectance as a
-   * small bright source is mirrored by glass (none at index 1). Specular 1 and SpecularPower
-   * 100 are a good start.
+   * Glass shows the renderer's lights (headlight, light kit, scene lights) as highlights,
+   * in the actor's Specular times SpecularColor with its SpecularPower, weighted by the glass's
+   * Fresnel reflectance as glass mirrors a small bright source (none at index 1). An actor
+   * whose property still has VTK's defaults (Specular 0, SpecularPower 1) gets
+   * DefaultGlassSpecular and DefaultGlassSpecularPower here; set Specular 0 for none.
    */
   static bool MakeGlass(vtkProp* prop, double indexOfRefraction = 1.5);
+  static constexpr double DefaultGlassSpecular = 1.0;
+  static constexpr double DefaultGlassSpecularPower = 100.0;
   /// Unmark a prop; it renders as an ordinary actor again.
   static void ClearGlass(vtkProp* prop);
   /// True when the prop is marked as glass.

@@ -147,6 +147,7 @@ int NonFinitePoints(MessageLog* log, bool infinite)
   AddRest(rig);
   auto subject = ActorFor(poly);
   RF_REQUIRE(vtkRefractionPass::MakeGlass(subject, 1.5), "MakeGlass refused a valid IOR");
+  rftest::WithoutHighlights(subject);
   rig.Renderer->AddActor(subject);
   Look(rig);
   const Frame reference = Reference(nullptr);
@@ -180,6 +181,7 @@ int EmptyPolyData(MessageLog* log)
   AddRest(rig);
   auto subject = ActorFor(empty);
   vtkRefractionPass::MakeGlass(subject, 1.5);
+  rftest::WithoutHighlights(subject);
   rig.Renderer->AddActor(subject);
   Look(rig);
   return CheckScene(log, rig, "warning",
@@ -219,6 +221,7 @@ int WithoutPolygons(MessageLog* log, bool lines)
   AddRest(rig);
   auto subject = ActorFor(poly);
   vtkRefractionPass::MakeGlass(subject, 1.5);
+  rftest::WithoutHighlights(subject);
   rig.Renderer->AddActor(subject);
   Look(rig);
   const std::string count = lines
@@ -269,6 +272,7 @@ int ZeroViewport(MessageLog* log)
   empty->SetLayer(0);
   auto glass = ActorFor(Sphere(0.0, 1.0));
   vtkRefractionPass::MakeGlass(glass, 1.5);
+  rftest::WithoutHighlights(glass);
   empty->AddActor(glass);
   rig.Window->AddRenderer(empty);
   // B renders after A and clears its full viewport, so the picture is B's alone.
@@ -385,6 +389,7 @@ int TranslucentGlass(MessageLog* log, const std::string&)
   auto subject = ActorFor(poly);
   subject->GetProperty()->SetOpacity(0.5);
   RF_REQUIRE(vtkRefractionPass::MakeGlass(subject, 1.5), "MakeGlass refused a valid IOR");
+  rftest::WithoutHighlights(subject);
   rig.Renderer->AddActor(subject);
   Look(rig);
   Rig plain(kSize, kSize);

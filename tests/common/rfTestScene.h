@@ -153,10 +153,23 @@ inline vtkSmartPointer<vtkActor> FlatActor(vtkPolyData* poly, double r, double g
   return actor;
 }
 
+/// MakeGlass gives an actor at VTK's default specular terms glass's highlights of the
+/// renderer's lights. Tests of the refraction turn them off: the reference tracer traces no
+/// light sources, and the baselines and closed forms are of the refraction alone (the
+/// highlights have their own test, TestGlassHighlights).
+inline void WithoutHighlights(vtkProp* prop)
+{
+  if (auto* actor = vtkActor::SafeDownCast(prop))
+  {
+    actor->GetProperty()->SetSpecular(0.0);
+  }
+}
+
 inline vtkSmartPointer<vtkActor> GlassActor(vtkPolyData* poly, double ior)
 {
   auto actor = ActorFor(poly);
   vtkRefractionPass::MakeGlass(actor, ior);
+  WithoutHighlights(actor);
   return actor;
 }
 

@@ -236,6 +236,7 @@ int CompareWithActors(int method, vtkDataObject* data, const std::vector<Part>& 
   auto* scene = new Scene(method);
   auto composite = CompositeActor(data, parts);
   vtkRefractionPass::MakeGlass(composite, 1.5);
+  rftest::WithoutHighlights(composite);
   scene->Renderer->AddActor(composite);
   auto one = scene->Render();
   scene->Renderer->RemoveActor(composite);
@@ -244,6 +245,7 @@ int CompareWithActors(int method, vtkDataObject* data, const std::vector<Part>& 
   {
     actors.push_back(PartActor(part));
     vtkRefractionPass::MakeGlass(actors.back(), 1.5);
+    rftest::WithoutHighlights(actors.back());
     scene->Renderer->AddActor(actors.back());
   }
   auto separate = scene->Render();
@@ -348,6 +350,7 @@ int NestedBlocks()
   auto composite = CompositeActor(blocks, parts);
   vtkCompositePolyDataMapper2::SafeDownCast(composite->GetMapper())->SetBlockVisibility(2, false);
   vtkRefractionPass::MakeGlass(composite, 1.5);
+  rftest::WithoutHighlights(composite);
   scene->Renderer->AddActor(composite);
   auto outerOnly = scene->Render();
   WritePNG(outerOnly, "nested_blocks_outer_only.png");
@@ -396,6 +399,7 @@ int OpenBlocks()
   // with the second and the picture changes.
   auto composite = CompositeActor(blocks, parts);
   vtkRefractionPass::MakeGlass(composite, 1.5);
+  rftest::WithoutHighlights(composite);
   vtkRefractionPass::SetSurfaceModel(composite, vtkRefractionPass::SURFACE_SOLID);
   scene->Renderer->AddActor(composite);
   auto solid = scene->Render();
@@ -414,6 +418,7 @@ int HiddenBlock()
   auto composite = CompositeActor(blocks, parts);
   vtkCompositePolyDataMapper2::SafeDownCast(composite->GetMapper())->SetBlockVisibility(2, false);
   vtkRefractionPass::MakeGlass(composite, 1.5);
+  rftest::WithoutHighlights(composite);
   scene.Renderer->AddActor(composite);
   auto one = scene.Render();
   scene.Renderer->RemoveActor(composite);
@@ -421,6 +426,7 @@ int HiddenBlock()
   {
     auto actor = PartActor(parts[i]);
     vtkRefractionPass::MakeGlass(actor, 1.5);
+    rftest::WithoutHighlights(actor);
     scene.Renderer->AddActor(actor);
   }
   auto separate = scene.Render();
@@ -442,6 +448,7 @@ int BadBlock()
   auto blocks = Multiblock(parts);
   auto composite = CompositeActor(blocks, parts);
   vtkRefractionPass::MakeGlass(composite, 1.5);
+  rftest::WithoutHighlights(composite);
   scene.Renderer->AddActor(composite);
   auto picture = scene.Render();
   scene.Render();
@@ -472,6 +479,7 @@ int BadBlock()
   broken->SetPolys(triangles);
   auto single = rftest::ActorFor(broken);
   vtkRefractionPass::MakeGlass(single, 1.5);
+  rftest::WithoutHighlights(single);
   scene.Renderer->RemoveActor(composite);
   scene.Renderer->AddActor(single);
   picture = scene.Render();

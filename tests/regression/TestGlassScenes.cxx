@@ -31,6 +31,7 @@ int SphereCase(int argc, char* argv[], bool sir)
   vtkNew<vtkRenderer> renderer;
   auto sphere = rftest::MakeSphere(1.0, 64);
   vtkRefractionPass::MakeGlass(sphere, 1.5);
+  rftest::WithoutHighlights(sphere);
   renderer->AddActor(sphere);
   vtkNew<vtkRefractionPass> glass;
   glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
@@ -56,6 +57,7 @@ int TorusCase(int argc, char* argv[])
   auto torus = rftest::MakeTorus();
   torus->RotateX(60.0);
   vtkRefractionPass::MakeGlass(torus, 1.33);
+  rftest::WithoutHighlights(torus);
   renderer->AddActor(torus);
   vtkNew<vtkRefractionPass> glass;
   glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
@@ -75,6 +77,7 @@ int IsosurfaceCase(int argc, char* argv[])
   surface->ComputeNormalsOn();
   auto actor = rftest::ActorFor(surface->GetOutputPort());
   vtkRefractionPass::MakeGlass(actor, 1.5);
+  rftest::WithoutHighlights(actor);
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   vtkNew<vtkRefractionPass> glass;
@@ -101,6 +104,7 @@ int OpaqueOrderCase(int argc, char* argv[])
   vtkNew<vtkRenderer> renderer;
   auto sphere = rftest::MakeSphere(1.0, 64);
   vtkRefractionPass::MakeGlass(sphere, 1.5);
+  rftest::WithoutHighlights(sphere);
   const double cubeCentre[3] = { 0.6, 0.0, 1.5 };
   const double cubeSize[3] = { 0.4, 0.4, 0.4 };
   auto front = rftest::FlatActor(rftest::BoxPoly(cubeSize, cubeCentre), 0.0, 1.0, 0.0);
@@ -162,6 +166,7 @@ int SSPCase(int argc, char* argv[])
   vtkNew<vtkRenderer> renderer;
   auto sphere = rftest::MakeSphere(1.0, 64);
   vtkRefractionPass::MakeGlass(sphere, 1.5);
+  rftest::WithoutHighlights(sphere);
   const double cubeCentre[3] = { 0.75, 0.0, 1.5 };
   const double cubeSize[3] = { 0.5, 0.5, 0.2 };
   auto front = rftest::FlatActor(rftest::BoxPoly(cubeSize, cubeCentre), 0.0, 1.0, 0.0);
@@ -236,6 +241,7 @@ int ISRCase(int argc, char* argv[], bool torus)
     actor->RotateX(60.0);
   }
   vtkRefractionPass::MakeGlass(actor, torus ? 1.33 : 1.5);
+  rftest::WithoutHighlights(actor);
   renderer->AddActor(actor);
   vtkNew<vtkRefractionPass> glass;
   glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
@@ -249,6 +255,7 @@ int ISRCase(int argc, char* argv[], bool torus)
   renderer->RemoveActor(actor);
   renderer->AddActor(shape);
   vtkRefractionPass::MakeGlass(shape, vtkRefractionPass::GetIndexOfRefraction(actor));
+  rftest::WithoutHighlights(shape);
   window->Render();
   auto withoutDistances = rftest::Grab(window);
   renderer->RemoveActor(shape);
@@ -293,6 +300,7 @@ int PassThroughCase(int argc, char* argv[])
   RF_REQUIRE(worst == 0, "the pass changes a scene without glass (max difference %d)", worst);
   // Marking then unmarking an actor returns it to plain rendering.
   vtkRefractionPass::MakeGlass(sphere, 1.5);
+  rftest::WithoutHighlights(sphere);
   window->Render();
   auto glassImage = rftest::Grab(window);
   RF_REQUIRE(rftest::MaxChannelDifference(plain, glassImage) > 32, "the sphere did not turn to glass");

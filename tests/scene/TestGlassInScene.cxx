@@ -104,6 +104,7 @@ struct Scene : rftest::ReferenceScene
     sphere->SetPhiResolution(96);
     this->Glass = rftest::ActorFor(sphere->GetOutputPort());
     vtkRefractionPass::MakeGlass(this->Glass, ior);
+    rftest::WithoutHighlights(this->Glass);
     this->Renderer->AddActor(this->Glass);
   }
 };
@@ -694,6 +695,7 @@ int Dispersion()
   for (int c = 0; c < 3; ++c)
   {
     vtkRefractionPass::MakeGlass(scene.Glass, indices[c]);
+    rftest::WithoutHighlights(scene.Glass);
     single[c] = scene.Render();
   }
   RF_REQUIRE(!vtkRefractionPass::SetDispersion(scene.Glass, 1.45, -1.0, 1.56),
@@ -744,6 +746,7 @@ int TIRFollowed()
   glass->RotateX(35.0);
   glass->RotateY(40.0);
   vtkRefractionPass::MakeGlass(glass, 1.6);
+  rftest::WithoutHighlights(glass);
   scene.Renderer->RemoveActor(scene.Glass);
   scene.Renderer->AddActor(glass);
   scene.Glass = glass;

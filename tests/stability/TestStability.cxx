@@ -120,6 +120,7 @@ Run RunScene(const Scene& sc, const std::function<void(Run&)>& beforeBase = null
   if (sc.PerturbIOR)
   {
     vtkRefractionPass::MakeGlass(run.Actor, sc.IOR * (1.0 + kPerturbation));
+    rftest::WithoutHighlights(run.Actor);
   }
   else if (sc.Placement)
   {
@@ -141,6 +142,7 @@ Run RunScene(const Scene& sc, const std::function<void(Run&)>& beforeBase = null
   }
   run.Perturbed = run.R->Render();
   vtkRefractionPass::MakeGlass(run.Actor, sc.IOR);
+  rftest::WithoutHighlights(run.Actor);
   run.Actor->SetScale(1.0);
   run.Actor->SetUserMatrix(sc.Placement);
   run.R->UseSmoothEnvironment(false);

@@ -403,6 +403,32 @@ int TranslucentGlass(MessageLog* log, const std::string&)
     { "Glass actor", Address(subject.Get()), "opacity 0.5", "translucent pass" }, reference);
 }
 
+// The same, made translucent after it was drawn as glass: its mapper's program must not keep
+// the glass stages' shader code (VTK rebuilds a program only when a pass's stage time is
+// newer than it), so it looks exactly like the ordinary translucent actor.
+int TranslucentAfterGlass(MessageLog* log, const std::string&)
+{
+  auto poly = Sphere(-1.2, 0.7);
+  Rig rig(kSize, kSize);
+  AddRest(rig);
+  auto subject = ActorFor(poly);
+  RF_REQUIRE(vtkRefractionPass::MakeGlass(subject, 1.5), "MakeGlass refused a valid IOR");
+  rftest::WithoutHighlights(subject);
+  rig.Renderer->AddActor(subject);
+  Look(rig);
+  rig.Render();
+  subject->GetProperty()->SetOpacity(0.5);
+  Rig plain(kSize, kSize);
+  AddRest(plain);
+  auto ordinary = ActorFor(poly);
+  ordinary->GetProperty()->SetOpacity(0.5);
+  plain.Renderer->AddActor(ordinary);
+  Look(plain);
+  const Frame reference = plain.Render();
+  return CheckScene(log, rig, "warning",
+    { "Glass actor", Address(subject.Get()), "opacity 0.5", "translucent pass" }, reference);
+}
+
 // The table of cases (rfBadInputCases.def, which CMake reads too: each is badinput.<name>).
 struct Case
 {

@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <cmath>
 #include <sstream>
+#include <unordered_map>
 #include <vector>
 
 vtkStandardNewMacro(vtkRefractionGeometryStage);
@@ -39,6 +40,75 @@ const char* const kImplTag = "//RF::Geometry::Impl";
 bool IsGlassMapper(vtkAbstractMapper* mapper, vtkProp* prop)
 {
   return vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && vtkRefractionPass::IsGlass(prop);
+}
+
+// A surface is open as a whole (a thin sheet) when its boundary is at least this many times
+// the square root of its area; below, it is a solid with holes.
+const double kOpenAsAWhole = 1.0;
+
+// The total length of the edges used by one polygon only (ends keyed by position, as the
+// closedness test keys them) and the area of the polygons, leaving out those of no area.
+void MeasureBoundary(vtkPolyData* poly, const std::vector<std::uint64_t>& keys,
+  double minimumArea2, double& length, double& area)
+{
+  struct Edge
+  {
+    int Uses = 0;
+    double Length = 0.0;
+  };
+  std::unordered_map<std::uint64_t, Edge> edges;
+  length = 0.0;
+  area = 0.0;
+  vtkCellArray* polys = poly->GetPolys();
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
+  {
+    if (count < 3)
+    {
+      continue;
+    }
+    double a[3];
+    double b[3];
+    double c[3];
+    poly->GetPoint(ids[0], a);
+    double normal[3] = { 0.0, 0.0, 0.0 };
+    for (vtkIdType j = 1; j + 1 < count; ++j)
+    {
+      poly->GetPoint(ids[j], b);
+      poly->GetPoint(ids[j + 1], c);
+      const double ab[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+      const double ac[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+      double cross[3];
+      vtkMath::Cross(ab, ac, cross);
+      for (int k = 0; k < 3; ++k)
+      {
+        normal[k] += cross[k];
+      }
+    }
+    const double area2 = vtkMath::Dot(normal, normal);
+    if (area2 <= minimumArea2)
+    {
+      continue;
+    }
+    area += 0.5 * std::sqrt(area2);
+    for (vtkIdType j = 0; j < count; ++j)
+    {
+      const vtkIdType from = ids[j];
+      const vtkIdType to = ids[(j + 1) % count];
+      const std::uint64_t lo = std::min(keys[from], keys[to]);
+      const std::uint64_t hi = std::max(keys[from], keys[to]);
+      Edge& edge = edges[lo * 0x9E3779B97F4A7C15ULL ^ (hi + 0x632BE59BD9B4E019ULL)];
+      ++edge.Uses;
+      poly->GetPoint(from, b);
+      poly->GetPoint(to, c);
+      edge.Length = std::sqrt(vtkMath::Distance2BetweenPoints(b, c));
+    }
+  }
+  for (const auto& edge : edges)
+  {
+    length += edge.second.Uses == 1 ? edge.second.Length : 0.0;
+  }
 }
 }
 
@@ -602,6 +672,16 @@ const vtkRefractionGeometryStage::Surface& vtkRefractionGeometryStage::GetMeshSu
   surface.Polygons = polys->GetNumberOfCells() > 0 || poly->GetNumberOfStrips() > 0;
   surface.Closed = edgeSum == 0 && poly->GetNumberOfStrips() == 0 && polys->GetNumberOfCells() > 0;
   surface.Boundary = edgeParity != 0 && poly->GetNumberOfStrips() == 0;
+  if (surface.Boundary)
+  {
+    // Open, but how much? A scan with a few small holes, or a contour that touches the domain
+    // at a few cells, is a solid with holes; a height field or a bowl is open as a whole. The
+    // measure: the boundary's length against the square root of the area (4 for a square
+    // sheet, 2.5 for a hemisphere, 0.18 for a sphere with a cap of a tenth of its radius cut).
+    MeasureBoundary(poly, keys[0], minimumArea2, surface.BoundaryLength, surface.Area);
+    surface.Boundary = surface.BoundaryLength >= kOpenAsAWhole * std::sqrt(surface.Area);
+    surface.SmallHoles = !surface.Boundary;
+  }
   return surface;
 }
 

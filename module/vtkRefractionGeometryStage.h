@@ -117,7 +117,10 @@ private:
     int WindingSign = 1;
     bool Polygons = false; ///< any polygon or strip
     bool Closed = false;   ///< closed and consistently wound: faces can be culled
-    bool Boundary = false; ///< an edge used once (an open surface)
+    bool Boundary = false;   ///< open as a whole: edges used once, long against the area
+    bool SmallHoles = false; ///< edges used once, but short: a solid with holes
+    double BoundaryLength = 0.0;
+    double Area = 0.0;
     int Blocks = 0;        ///< the prop's: meshes with polygons (composite data: blocks)
     int OpenBlocks = 0;    ///< the prop's: of those, the ones with a boundary
   };

@@ -200,8 +200,10 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
       names << " " << prop->GetClassName() << " " << prop;
     }
     vtkWarningMacro("Glass prop(s)" << names.str()
-                                    << " have open surfaces (boundary edges): drawn as thin "
-                                       "sheets (vtkRefractionPass::SetSurfaceModel to choose).");
+                                    << " are open as a whole (edges used by one polygon, as "
+                                       "long as the square root of the area or longer; small "
+                                       "holes leave a solid): drawn as thin sheets "
+                                       "(vtkRefractionPass::SetSurfaceModel to choose).");
   }
   this->SheetsReported = sheets;
   if (!mixed.empty() && mixed != this->MixedReported)

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Every test: install what is missing, build, run ctest (under Xvfb when there is no display).
-# Extra arguments go to ctest (for example -L unit). The stability table the stability tests
-# write is printed after the run, then ctest's count again as the closing line.
+# Every test: install what is missing, build, run ctest (under Xvfb when there is no display):
+# all tests in VTK's default windows, the rendering tests (label gl) again in single-sampled
+# windows, the bad-input and composite tests again under AddressSanitizer. Extra arguments go
+# to ctest (for example -L unit). The stability table the stability tests write is printed
+# after the runs, then the counts of the three runs as the closing lines.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -30,6 +32,27 @@ echo
 echo "The rendering tests (label gl) again with RF_TEST_MULTISAMPLES=0 (single-sampled windows):"
 RF_TEST_MULTISAMPLES=0 "${runner[@]}" ctest --output-on-failure -L gl "$@" 2>&1 | tee "$single_log"
 single_status=${PIPESTATUS[0]}
+# The bad-input and composite tests again, built with AddressSanitizer (the module, the tests
+# and the C core; VTK and Mesa are not instrumented): a malformed mesh must not make this
+# project's code read or write out of bounds. Leak checking is off (VTK and Mesa keep
+# allocations to exit).
+asan_log=Testing/last-run-asan.log
+echo
+echo "The bad-input and composite tests again under AddressSanitizer (build-asan/):"
+(
+  cd ..
+  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_C_FLAGS="-fsanitize=address -fno-omit-frame-pointer" \
+    -DCMAKE_CXX_FLAGS="-fsanitize=address -fno-omit-frame-pointer" \
+    -DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address -DCMAKE_SHARED_LINKER_FLAGS=-fsanitize=address \
+    >/dev/null
+  cmake --build build-asan -j "$(nproc)" --target TestBadInput TestGlassComposite \
+    test_core_bad_input >/dev/null
+  cd build-asan
+  ASAN_OPTIONS=detect_leaks=0 "${runner[@]}" ctest --output-on-failure -L "badinput|composite" \
+    -E fuzz "$@"
+) 2>&1 | tee "$asan_log"
+asan_status=${PIPESTATUS[0]}
 set -e
 if [ -f "$table" ]; then
   echo
@@ -47,9 +70,13 @@ summarize() {
   fi
 }
 echo
+summarize "$asan_log" "bad-input and composite tests under AddressSanitizer"
 summarize "$single_log" "rendering tests in single-sampled windows"
 summarize "$log" "all tests in VTK's default windows"
 if [ "$status" -eq 0 ]; then
   status=$single_status
+fi
+if [ "$status" -eq 0 ]; then
+  status=$asan_status
 fi
 exit "$status"

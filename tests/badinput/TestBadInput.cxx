@@ -429,6 +429,46 @@ int TranslucentAfterGlass(MessageLog* log, const std::string&)
     { "Glass actor", Address(subject.Get()), "opacity 0.5", "translucent pass" }, reference);
 }
 
+// A glass sphere whose polydata also holds a line and a vertex (cells of mixed types) and
+// degenerate triangles (repeated points): a valid mesh, drawn without a message, a GL error or
+// a non-finite pixel over three frames.
+int MixedCells(MessageLog* log, const std::string&)
+{
+  auto poly = Sphere(-1.2, 0.7);
+  auto mixed = vtkSmartPointer<vtkPolyData>::New();
+  mixed->DeepCopy(poly);
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType line[2] = { 0, poly->GetNumberOfPoints() - 1 };
+  lines->InsertNextCell(2, line);
+  mixed->SetLines(lines);
+  vtkNew<vtkCellArray> verts;
+  const vtkIdType vert[1] = { 5 };
+  verts->InsertNextCell(1, vert);
+  mixed->SetVerts(verts);
+  const vtkIdType degenerate[3] = { 7, 7, 8 };
+  mixed->GetPolys()->InsertNextCell(3, degenerate);
+  const vtkIdType collinear[3] = { 9, 9, 9 };
+  mixed->GetPolys()->InsertNextCell(3, collinear);
+  Rig rig(kSize, kSize);
+  AddRest(rig);
+  auto subject = ActorFor(mixed);
+  vtkRefractionPass::MakeGlass(subject, 1.5);
+  rftest::WithoutHighlights(subject);
+  rig.Renderer->AddActor(subject);
+  Look(rig);
+  Frame f;
+  for (int i = 0; i < 3; ++i)
+  {
+    f = rig.Render();
+    RF_REQUIRE(f.GLErrors == 0, "OpenGL error after the pass (frame %d)", i);
+    RF_REQUIRE(f.NonFinite() == 0, "NaN/Inf in the output (frame %d)", i);
+  }
+  const int messages = log->Count("error") + log->Count("warning");
+  std::printf("mixed_cells: %d error and warning messages\n", messages);
+  RF_REQUIRE(messages == 0, "messages for a valid mesh of mixed cells (%d)", messages);
+  return EXIT_SUCCESS;
+}
+
 // The table of cases (rfBadInputCases.def, which CMake reads too: each is badinput.<name>).
 struct Case
 {

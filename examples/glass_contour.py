@@ -39,7 +39,10 @@ METHODS = {
     "sir": vtkRefractionPass.SIR,
     "isr": vtkRefractionPass.ISR,
     "ssp": vtkRefractionPass.SSP,
+    "peel": vtkRefractionPass.PEEL,
 }
+# SH needs a vtkSHTransferFilter before the glass's mapper (a precomputation for static
+# meshes), which this re-contoured surface does not have.
 
 
 def build_scene(size=300, method="dir", index_of_refraction=1.5):

@@ -69,7 +69,8 @@ bool CheckConnectivity(vtkDataSet* data, std::string& error)
     kind.second->GetConnectivityArray()->GetRange(range, 0);
     if (range[0] < 0.0 || range[1] >= static_cast<double>(points))
     {
-      error = std::string("a ") + kind.first + (kind.first[0] ? " " : "") + "cell names point (counting from 0) " +
+      error = std::string("a ") + kind.first + (kind.first[0] ? " " : "") +
+        "cell names point (counting from 0) " +
         std::to_string(static_cast<long long>(range[0] < 0.0 ? range[0] : range[1])) +
         ", but there are " + std::to_string(points) + " points";
       return false;

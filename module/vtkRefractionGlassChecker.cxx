@@ -1,16 +1,16 @@
 #include "vtkRefractionGlassChecker.h"
 
 #include "vtkActor.h"
+#include "vtkCellArray.h"
 #include "vtkDataArray.h"
+#include "vtkMapper.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkCellArray.h"
-#include "vtkMapper.h"
-#include "vtkRefractionMeshes.h"
 #include "vtkProp.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
+#include "vtkRefractionMeshes.h"
 #include "vtkRefractionPass.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
@@ -196,9 +196,11 @@ int vtkRefractionGlassChecker::CheckGlassProp(vtkProp* prop)
   }
   if (points == 0 || cells == 0)
   {
-    vtkWarningMacro("Glass prop " << name << " has an empty "
-                                  << (composite ? "composite data set (" + std::to_string(blocks.size()) + " polydata blocks, " : "vtkPolyData (")
-                                  << points << " points, " << cells << " cells): nothing to draw.");
+    const std::string what = composite
+      ? "composite data set (" + std::to_string(blocks.size()) + " polydata blocks, "
+      : std::string("vtkPolyData (");
+    vtkWarningMacro("Glass prop " << name << " has an empty " << what << points << " points, "
+                                  << cells << " cells): nothing to draw.");
     check.Verdict = GLASS_SKIPPED;
     return check.Verdict;
   }

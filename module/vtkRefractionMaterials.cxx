@@ -11,11 +11,11 @@
 #include "vtkMapper.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRefractionGeometryStage.h"
 #include "vtkRefractionMeshes.h"
 #include "vtkRefractionPass.h"
-#include "vtkPolyData.h"
 
 #include <algorithm>
 #include <cmath>

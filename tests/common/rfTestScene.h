@@ -1,6 +1,6 @@
 // The test scenes' parts, shared by the regression, stability and bad-input tests: the
 // shapes (as vtkPolyData or as a live pipeline), their actors, the camera, the window (EGL,
-// small, single-sampled) and the image comparisons.
+// small, VTK's default multisampling) and the image comparisons.
 #ifndef rfTestScene_h
 #define rfTestScene_h
 

@@ -12,9 +12,10 @@ namespace rftest
 {
 /**
  * An off-screen window of width x height with VTK's default multisampling (8 samples asked;
- * RF_TEST_MULTISAMPLES=N in the environment asks for N, 0 for a single-sampled window). Without EGL it prints why and exits
- * the test with EXIT_FAILURE (a test that cannot render must not pass). RF_TEST_WINDOW=x11
- * in the environment gives VTK's X window instead (needs a display), to compare the paths.
+ * RF_TEST_MULTISAMPLES=N in the environment asks for N, 0 for a single-sampled window).
+ * Without EGL it prints why and exits the test with EXIT_FAILURE (a test that cannot render
+ * must not pass). RF_TEST_WINDOW=x11 in the environment gives VTK's X window instead (needs a
+ * display), to compare the paths. After every frame a pending OpenGL error fails the test.
  */
 vtkSmartPointer<vtkRenderWindow> NewRenderWindow(int width, int height);
 }

@@ -137,8 +137,9 @@ int Headlight()
       {
         for (int c = 0; c < 3; ++c)
         {
-          far = std::max(far, static_cast<int>(std::abs(lit->GetScalarComponentAsDouble(px, py, 0, c) -
-                                unlit->GetScalarComponentAsDouble(px, py, 0, c))));
+          const double change = lit->GetScalarComponentAsDouble(px, py, 0, c) -
+            unlit->GetScalarComponentAsDouble(px, py, 0, c);
+          far = std::max(far, static_cast<int>(std::abs(change)));
         }
       }
     }

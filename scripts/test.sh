@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Every test: install what is missing, build, run ctest (under Xvfb when there is no display):
 # all tests in VTK's default windows, the rendering tests (label gl) again in single-sampled
-# windows, the bad-input and composite tests again under AddressSanitizer. Extra arguments go
+# windows, the unit, bad-input, stability, scene and composite tests again under Address- and
+# UndefinedBehaviorSanitizer (ending with "sanitizers: N passed, 0 failed"). Extra arguments go
 # to ctest (for example -L unit). The stability table the stability tests write is printed
 # after the runs, then the counts of the three runs as the closing lines.
 set -euo pipefail
@@ -32,27 +33,33 @@ echo
 echo "The rendering tests (label gl) again with RF_TEST_MULTISAMPLES=0 (single-sampled windows):"
 RF_TEST_MULTISAMPLES=0 "${runner[@]}" ctest --output-on-failure -L gl "$@" 2>&1 | tee "$single_log"
 single_status=${PIPESTATUS[0]}
-# The bad-input and composite tests again, built with AddressSanitizer (the module, the tests
-# and the C core; VTK and Mesa are not instrumented): a malformed mesh must not make this
-# project's code read or write out of bounds. Leak checking is off (VTK and Mesa keep
-# allocations to exit).
-asan_log=Testing/last-run-asan.log
+# The unit, bad-input, stability, scene and composite tests again, built with AddressSanitizer
+# and UndefinedBehaviorSanitizer (the module, the tests and the C core; VTK and Mesa are not
+# instrumented): a malformed mesh must not make this project's code read or write out of
+# bounds or do anything undefined. Leak checks are off (VTK and Mesa keep allocations to exit);
+# any undefined behaviour aborts its test. Only the programs those tests run are built: their
+# names are read from ctest's own list.
+sanitizer_labels="unit|badinput|stability|scene|composite"
+sanitizer_log=Testing/last-run-sanitizers.log
 echo
-echo "The bad-input and composite tests again under AddressSanitizer (build-asan/):"
+echo "The $sanitizer_labels tests again under AddressSanitizer and UndefinedBehaviorSanitizer (build-asan/):"
 (
+  set -euo pipefail
   cd ..
-  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_C_FLAGS="-fsanitize=address -fno-omit-frame-pointer" \
-    -DCMAKE_CXX_FLAGS="-fsanitize=address -fno-omit-frame-pointer" \
-    -DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address -DCMAKE_SHARED_LINKER_FLAGS=-fsanitize=address \
-    >/dev/null
-  cmake --build build-asan -j "$(nproc)" --target TestBadInput TestGlassComposite \
-    test_core_bad_input >/dev/null
+  flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_FLAGS="$flags" \
+    -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+    -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
   cd build-asan
-  ASAN_OPTIONS=detect_leaks=0 "${runner[@]}" ctest --output-on-failure -L "badinput|composite" \
-    -E fuzz "$@"
-) 2>&1 | tee "$asan_log"
-asan_status=${PIPESTATUS[0]}
+  # "Test command: /path/bin/NAME args": each program's name is its CMake target's.
+  mapfile -t targets < <(ctest -N -V -L "$sanitizer_labels" -E fuzz |
+    sed -n 's|^.*Test command: *\([^ ]*\).*$|\1|p' | xargs -n 1 basename | sort -u)
+  [ ${#targets[@]} -gt 0 ] || { echo "no tests labelled $sanitizer_labels" >&2; exit 1; }
+  cmake --build . -j "$(nproc)" --target "${targets[@]}" >/dev/null
+  ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 "${runner[@]}" \
+    ctest --output-on-failure -L "$sanitizer_labels" -E fuzz "$@"
+) 2>&1 | tee "$sanitizer_log"
+sanitizer_status=${PIPESTATUS[0]}
 set -e
 if [ -f "$table" ]; then
   echo
@@ -70,13 +77,18 @@ summarize() {
   fi
 }
 echo
-summarize "$asan_log" "bad-input and composite tests under AddressSanitizer"
 summarize "$single_log" "rendering tests in single-sampled windows"
 summarize "$log" "all tests in VTK's default windows"
+sanitizers=$(summarize "$sanitizer_log" "sanitizers")
+if [ -n "$sanitizers" ]; then
+  echo "${sanitizers#ctest, }" | sed -E 's/, [0-9]+ skipped$//'
+else
+  echo "sanitizers: no result (see build/$sanitizer_log)"
+fi
 if [ "$status" -eq 0 ]; then
   status=$single_status
 fi
 if [ "$status" -eq 0 ]; then
-  status=$asan_status
+  status=$sanitizer_status
 fi
 exit "$status"

@@ -37,8 +37,8 @@ single_status=${PIPESTATUS[0]}
 # and UndefinedBehaviorSanitizer (the module, the tests and the C core; VTK and Mesa are not
 # instrumented): a malformed mesh must not make this project's code read or write out of
 # bounds or do anything undefined. Leak checks are off (VTK and Mesa keep allocations to exit);
-# any undefined behaviour aborts its test. Only the programs those tests run are built: their
-# names are read from ctest's own list.
+# any undefined behaviour aborts its test. Only the programs those tests run are built
+# (scripts/test-programs.py reads them from the test files CMake wrote).
 sanitizer_labels="unit|badinput|stability|scene|composite"
 sanitizer_log=Testing/last-run-sanitizers.log
 echo
@@ -50,11 +50,9 @@ echo "The $sanitizer_labels tests again under AddressSanitizer and UndefinedBeha
   cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_FLAGS="$flags" \
     -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
     -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
-  cd build-asan
-  # "Test command: /path/bin/NAME args": each program's name is its CMake target's.
-  mapfile -t targets < <(ctest -N -V -L "$sanitizer_labels" -E fuzz |
-    sed -n 's|^.*Test command: *\([^ ]*\).*$|\1|p' | xargs -n 1 basename | sort -u)
+  mapfile -t targets < <(python3 scripts/test-programs.py build-asan "$sanitizer_labels" fuzz)
   [ ${#targets[@]} -gt 0 ] || { echo "no tests labelled $sanitizer_labels" >&2; exit 1; }
+  cd build-asan
   cmake --build . -j "$(nproc)" --target "${targets[@]}" >/dev/null
   ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 "${runner[@]}" \
     ctest --output-on-failure -L "$sanitizer_labels" -E fuzz "$@"

@@ -179,9 +179,7 @@ int EmptyPolyData(MessageLog* log)
   vtkNew<vtkPolyData> empty;
   Rig rig(kSize, kSize);
   AddRest(rig);
-  auto subject = ActorFor(empty);
-  vtkRefractionPass::MakeGlass(subject, 1.5);
-  rftest::WithoutHighlights(subject);
+  auto subject = GlassActor(empty, 1.5);
   rig.Renderer->AddActor(subject);
   Look(rig);
   return CheckScene(log, rig, "warning",
@@ -219,9 +217,7 @@ int WithoutPolygons(MessageLog* log, bool lines)
   }
   Rig rig(kSize, kSize);
   AddRest(rig);
-  auto subject = ActorFor(poly);
-  vtkRefractionPass::MakeGlass(subject, 1.5);
-  rftest::WithoutHighlights(subject);
+  auto subject = GlassActor(poly, 1.5);
   rig.Renderer->AddActor(subject);
   Look(rig);
   const std::string count = lines
@@ -270,9 +266,7 @@ int ZeroViewport(MessageLog* log)
   empty->SetPass(pass);
   empty->SetViewport(0.25, 0.25, 0.25, 0.25);
   empty->SetLayer(0);
-  auto glass = ActorFor(Sphere(0.0, 1.0));
-  vtkRefractionPass::MakeGlass(glass, 1.5);
-  rftest::WithoutHighlights(glass);
+  auto glass = GlassActor(Sphere(0.0, 1.0), 1.5);
   empty->AddActor(glass);
   rig.Window->AddRenderer(empty);
   // B renders after A and clears its full viewport, so the picture is B's alone.
@@ -440,9 +434,7 @@ int MixedCells(MessageLog* log, const std::string&)
   mixed->GetPolys()->InsertNextCell(3, collinear);
   Rig rig(kSize, kSize);
   AddRest(rig);
-  auto subject = ActorFor(mixed);
-  vtkRefractionPass::MakeGlass(subject, 1.5);
-  rftest::WithoutHighlights(subject);
+  auto subject = GlassActor(mixed, 1.5);
   rig.Renderer->AddActor(subject);
   Look(rig);
   Frame f;

@@ -770,7 +770,7 @@ void vtkRefractionGeometryStage::MapNormalDistance(vtkProp* prop)
   if (vtkRefractionMeshes::IsComposite(prop))
   {
     vtkWarningMacro("ISR: glass actor " << actor
-                                        << " draws composite data: VTK 9.1's "
+                                        << " draws composite data: VTK's (9.1, 9.2) "
                                            "vtkCompositePolyDataMapper2 uploads no extra vertex "
                                            "attributes, so d_N cannot reach the shader; using "
                                            "d_N = d_V (SIR's distance).");

@@ -83,7 +83,7 @@ bool vtkRefractionSHTransfer::Check(const std::vector<vtkProp*>& glass, std::str
     if (vtkRefractionMeshes::IsComposite(prop))
     {
       why << "glass prop " << prop
-          << " draws composite data: VTK 9.1's vtkCompositePolyDataMapper2 uploads no extra "
+          << " draws composite data: VTK's (9.1, 9.2) vtkCompositePolyDataMapper2 uploads no extra "
              "vertex attributes, which the SH method needs (give it a vtkPolyData)";
     }
     else if (!transfer || !ids || !settings || settings->GetNumberOfTuples() < 4 ||

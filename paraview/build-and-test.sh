@@ -1,16 +1,29 @@
 #!/usr/bin/env bash
-# Builds the ParaView plugin and runs its test, on Debian bookworm with ParaView 5.11.
-# ParaView's packages conflict with libvtk9-dev and python3-vtk9 (the main project's), so run
-# this on a machine without them, e.g. a fresh root:
-#   ../shared/tools/fresh-debian.sh 'bash paraview/build-and-test.sh'
-# It installs what is missing (apt-get, as root or through sudo), builds into
-# paraview/build and runs ctest there (pvbatch under xvfb-run when there is no display).
+# Builds the ParaView plugin and runs its tests (label paraview: pvbatch, the install, the GUI
+# client), on Debian bookworm with ParaView 5.11. It installs what is missing (apt-get, as
+# root or through sudo), builds into paraview/build and runs ctest there (under xvfb-run when
+# there is no display). Arguments go to ctest.
+#
+# ParaView's packages conflict with libvtk9-dev and python3-vtk9 (the main project's): apt
+# removes those to install paraview-dev. On a machine that has them this script stops and
+# says so, unless RF_REPLACE_VTK=1 (CI sets it: it runs the main suite first, then this).
 set -euo pipefail
 cd "$(dirname "$0")"
+if [ "${RF_REPLACE_VTK:-0}" != 1 ]; then
+  for p in libvtk9-dev python3-vtk9; do
+    if dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+      echo "paraview/build-and-test.sh: $p is installed, and ParaView's packages replace it" >&2
+      echo "(paraview-dev conflicts with Debian's VTK 9.1 packages the main project uses)." >&2
+      echo "Run this on a machine without it (a fresh root: ../shared/tools/fresh-debian.sh" >&2
+      echo "'bash paraview/build-and-test.sh'), or set RF_REPLACE_VTK=1 to let apt remove it." >&2
+      exit 2
+    fi
+  done
+fi
 # paraview-dev's CMake config finds every external library its VTK 9.2 links (MPI, HDF5,
 # GLEW, ...) and fails on the first one whose headers are missing, but the package depends on
 # none of their -dev packages: they are listed here.
-packages=(cmake g++ make paraview-dev python3-paraview python3-dev libgl1-mesa-dri libegl-dev
+packages=(cmake g++ make paraview paraview-dev python3-paraview python3-dev libgl1-mesa-dri libegl-dev
   xvfb xauth
   mpi-default-dev libhdf5-mpi-dev python3-mpi4py libboost-dev libdouble-conversion-dev
   libeigen3-dev libexpat1-dev libfreetype-dev libgl-dev libgl2ps-dev libglew-dev libjpeg-dev

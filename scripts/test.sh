@@ -2,9 +2,11 @@
 # Every test: install what is missing, build, run ctest (under Xvfb when there is no display):
 # all tests in VTK's default windows, the rendering tests (label gl) again in single-sampled
 # windows, the unit, bad-input, stability, scene and composite tests again under Address- and
-# UndefinedBehaviorSanitizer (ending with "sanitizers: N passed, 0 failed"). Extra arguments go
-# to ctest (for example -L unit). The stability table the stability tests write is printed
-# after the runs, then the counts of the three runs as the closing lines.
+# UndefinedBehaviorSanitizer, then the ParaView plugin's tests (scripts/test-paraview.sh: it
+# swaps Debian's VTK packages for ParaView's and back; RF_SKIP_PARAVIEW=1 leaves it out).
+# Extra arguments go to ctest (for example -L unit). The stability table the stability tests
+# write is printed after the runs, then the counts of the four runs as the closing lines
+# (the last: "sanitizers: N passed, 0 failed").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -58,6 +60,12 @@ echo "The $sanitizer_labels tests again under AddressSanitizer and UndefinedBeha
     ctest --output-on-failure -L "$sanitizer_labels" -E fuzz "$@"
 ) 2>&1 | tee "$sanitizer_log"
 sanitizer_status=${PIPESTATUS[0]}
+# The ParaView plugin, in ParaView itself (label paraview).
+paraview_log=Testing/last-run-paraview.log
+echo
+echo "The ParaView plugin's tests (paraview/build-and-test.sh):"
+(cd .. && bash scripts/test-paraview.sh "$@") 2>&1 | tee "$paraview_log"
+paraview_status=${PIPESTATUS[0]}
 set -e
 if [ -f "$table" ]; then
   echo
@@ -77,6 +85,19 @@ summarize() {
 echo
 summarize "$single_log" "rendering tests in single-sampled windows"
 summarize "$log" "all tests in VTK's default windows"
+if grep -q "paraview stage: skipped" "$paraview_log"; then
+  echo "ctest, ParaView plugin: skipped (RF_SKIP_PARAVIEW=1)"
+else
+  paraview=$(summarize "$paraview_log" "ParaView plugin")
+  if [ -n "$paraview" ]; then
+    echo "$paraview"
+  elif grep -q "No tests were found" "$paraview_log"; then
+    echo "ctest, ParaView plugin: no test selected by the arguments"
+  else
+    echo "ctest, ParaView plugin: no result (see build/$paraview_log)"
+    [ "$paraview_status" -ne 0 ] || paraview_status=1
+  fi
+fi
 sanitizers=$(summarize "$sanitizer_log" "sanitizers")
 if [ -n "$sanitizers" ]; then
   echo "${sanitizers#ctest, }" | sed -E 's/, [0-9]+ skipped$//'
@@ -88,5 +109,8 @@ if [ "$status" -eq 0 ]; then
 fi
 if [ "$status" -eq 0 ]; then
   status=$sanitizer_status
+fi
+if [ "$status" -eq 0 ]; then
+  status=$paraview_status
 fi
 exit "$status"

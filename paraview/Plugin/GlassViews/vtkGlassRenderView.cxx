@@ -1,8 +1,15 @@
 #include "vtkGlassRenderView.h"
 
+#include "vtkDualDepthPeelingPass.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpaquePass.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkRefractionPass.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderer.h"
+#include "vtkSSAOPass.h"
+#include "vtkTranslucentPass.h"
 
 vtkStandardNewMacro(vtkGlassRenderView);
 
@@ -21,6 +28,53 @@ void vtkGlassRenderView::AboutToRenderOnLocalProcess(bool interactive)
   {
     this->SynchronizedRenderers->SetRenderPass(this->GlassPass);
   }
+  this->ConfigureDelegate();
+}
+
+void vtkGlassRenderView::ConfigureDelegate()
+{
+  // vtkPVRenderView::Render has set the renderer's SSAO and peeling settings by now. ParaView's
+  // own default pass gets them through vtkRenderer::UpdateGeometry; the refraction pass draws
+  // the scene through a vtkRenderStepsPass, whose steps are chosen here to match.
+  vtkRenderer* renderer = this->GetRenderer();
+  const int ssao = renderer->GetUseSSAO() ? 1 : 0;
+  const int peeling = renderer->GetUseDepthPeeling() ? 1 : 0;
+  if (ssao != this->DelegateSSAO || peeling != this->DelegatePeeling)
+  {
+    vtkNew<vtkRenderStepsPass> steps;
+    this->SSAOPass = nullptr;
+    this->PeelingPass = nullptr;
+    if (ssao)
+    {
+      this->SSAOPass = vtkSmartPointer<vtkSSAOPass>::New();
+      vtkNew<vtkOpaquePass> opaque;
+      this->SSAOPass->SetDelegatePass(opaque);
+      steps->SetOpaquePass(this->SSAOPass);
+    }
+    if (peeling)
+    {
+      this->PeelingPass = vtkSmartPointer<vtkDualDepthPeelingPass>::New();
+      vtkNew<vtkTranslucentPass> translucent;
+      this->PeelingPass->SetTranslucentPass(translucent);
+      steps->SetTranslucentPass(this->PeelingPass);
+    }
+    // The refraction pass takes the steps' opaque step and draws the glass after it.
+    this->GlassPass->SetDelegatePass(steps);
+    this->DelegateSSAO = ssao;
+    this->DelegatePeeling = peeling;
+  }
+  if (this->SSAOPass)
+  {
+    this->SSAOPass->SetRadius(renderer->GetSSAORadius());
+    this->SSAOPass->SetBias(renderer->GetSSAOBias());
+    this->SSAOPass->SetKernelSize(renderer->GetSSAOKernelSize());
+    this->SSAOPass->SetBlur(renderer->GetSSAOBlur());
+  }
+  if (this->PeelingPass)
+  {
+    this->PeelingPass->SetMaximumNumberOfPeels(renderer->GetMaximumNumberOfPeels());
+    this->PeelingPass->SetOcclusionRatio(renderer->GetOcclusionRatio());
+  }
 }
 
 void vtkGlassRenderView::SetGlassMethod(int method)
@@ -34,13 +88,38 @@ int vtkGlassRenderView::GetGlassMethod()
   return this->GlassPass->GetMethod();
 }
 
+// The view's glass settings are the pass's; a change is the view's modification too, so that
+// ParaView renders again.
+#define vtkGlassRenderViewSetting(name, type, passSetter, passGetter)                           \
+  void vtkGlassRenderView::SetGlass##name(type value)                                         \
+  {                                                                                            \
+    this->GlassPass->passSetter(value);                                                        \
+    this->Modified();                                                                          \
+  }                                                                                            \
+  type vtkGlassRenderView::GetGlass##name() { return static_cast<type>(this->GlassPass->passGetter()); }
+
+vtkGlassRenderViewSetting(Environment, int, SetEnvironmentMode, GetEnvironmentMode);
+vtkGlassRenderViewSetting(SceneRefraction, int, SetSceneRefraction, GetSceneRefraction);
+vtkGlassRenderViewSetting(TintFromColours, int, SetDataColour, GetDataColour);
+vtkGlassRenderViewSetting(AbsorptionDistance, double, SetAbsorptionDistance, GetAbsorptionDistance);
+vtkGlassRenderViewSetting(AntiAliasing, int, SetAntiAliasing, GetAntiAliasing);
+vtkGlassRenderViewSetting(Layers, int, SetPeelLayers, GetPeelLayers);
+vtkGlassRenderViewSetting(TIRBounces, int, SetTIRBounces, GetTIRBounces);
+
 int vtkGlassRenderView::GetNumberOfGlassProps()
 {
   return this->GlassPass->GetNumberOfGlassProps();
+}
+
+vtkRefractionPass* vtkGlassRenderView::GetGlassPass()
+{
+  return this->GlassPass;
 }
 
 void vtkGlassRenderView::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "GlassPass: " << this->GlassPass << "\n";
+  os << indent << "SSAOPass: " << this->SSAOPass << "\n";
+  os << indent << "PeelingPass: " << this->PeelingPass << "\n";
 }

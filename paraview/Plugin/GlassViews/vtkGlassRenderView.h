@@ -3,9 +3,16 @@
  * @brief   ParaView's render view drawing through vtkRefractionPass.
  *
  * The pass is the geometry pass of the view's synchronized renderers (set again before each
- * local render, should the view have replaced it); representations
- * of type "Glass" (vtkGlassRepresentation) are drawn as refractive glass, every other one as
- * in a plain render view.
+ * local render, should the view have replaced it); representations of type "Glass"
+ * (vtkGlassRepresentation) are drawn as refractive glass, every other one as in a plain
+ * render view. What ParaView's own default pass gets from the renderer is given to the
+ * pass's delegate before each render: SSAO (a vtkSSAOPass as its opaque step, with the
+ * renderer's radius, bias, kernel and blur) and depth peeling of translucent geometry (a
+ * vtkDualDepthPeelingPass); FXAA, tone mapping and the orientation axes are passes and
+ * renderers around this one and work as in the Render View.
+ *
+ * ParaView 5.11 gives a representation no way to add a render pass to the ordinary Render
+ * View (vtkPVSynchronizedRenderer owns and rebuilds the view's pass chain), hence this view.
  */
 #ifndef vtkGlassRenderView_h
 #define vtkGlassRenderView_h
@@ -15,6 +22,8 @@
 #include "vtkSmartPointer.h" // For members
 
 class vtkRefractionPass;
+class vtkSSAOPass;
+class vtkDualDepthPeelingPass;
 
 class REFRACTIONGLASSVIEWS_EXPORT vtkGlassRenderView : public vtkPVRenderView
 {
@@ -30,8 +39,30 @@ public:
   int GetGlassMethod();
   ///@}
 
+  ///@{
+  /// The pass's settings (see vtkRefractionPass): EnvironmentMode, SceneRefraction,
+  /// DataColour, AbsorptionDistance, AntiAliasing, PeelLayers and TIRBounces.
+  void SetGlassEnvironment(int mode);
+  int GetGlassEnvironment();
+  void SetGlassSceneRefraction(int on);
+  int GetGlassSceneRefraction();
+  void SetGlassTintFromColours(int on);
+  int GetGlassTintFromColours();
+  void SetGlassAbsorptionDistance(double distance);
+  double GetGlassAbsorptionDistance();
+  void SetGlassAntiAliasing(int on);
+  int GetGlassAntiAliasing();
+  void SetGlassLayers(int layers);
+  int GetGlassLayers();
+  void SetGlassTIRBounces(int bounces);
+  int GetGlassTIRBounces();
+  ///@}
+
   /// Glass props the pass drew in the last render (for tests).
   int GetNumberOfGlassProps();
+
+  /// The pass itself.
+  vtkRefractionPass* GetGlassPass();
 
 protected:
   vtkGlassRenderView();
@@ -39,7 +70,15 @@ protected:
 
   void AboutToRenderOnLocalProcess(bool interactive) override;
 
+  /// Give the pass a delegate that draws the rest of the scene as the renderer's own
+  /// settings ask (SSAO, depth peeling).
+  void ConfigureDelegate();
+
   vtkSmartPointer<vtkRefractionPass> GlassPass;
+  vtkSmartPointer<vtkSSAOPass> SSAOPass;
+  vtkSmartPointer<vtkDualDepthPeelingPass> PeelingPass;
+  int DelegateSSAO = -1;
+  int DelegatePeeling = -1;
 
 private:
   vtkGlassRenderView(const vtkGlassRenderView&) = delete;

@@ -4,6 +4,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpaquePass.h"
+#include "vtkOpenGLFXAAPass.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkRefractionPass.h"
 #include "vtkRenderStepsPass.h"
@@ -24,9 +25,25 @@ vtkGlassRenderView::~vtkGlassRenderView() = default;
 void vtkGlassRenderView::AboutToRenderOnLocalProcess(bool interactive)
 {
   this->Superclass::AboutToRenderOnLocalProcess(interactive);
-  if (this->SynchronizedRenderers->GetRenderPass() != this->GlassPass)
+  // ParaView applies FXAA in vtkRenderer::UpdateGeometry, which its default pass calls and
+  // this one does not; with an image processing pass (tone mapping) its own pass chain has an
+  // FXAA pass. So: the glass pass inside an FXAA pass when FXAA is on and the chain has none.
+  const bool fxaa = this->GetRenderer()->GetUseFXAA() &&
+    this->SynchronizedRenderers->GetImageProcessingPass() == nullptr;
+  vtkRenderPass* wanted = this->GlassPass;
+  if (fxaa)
   {
-    this->SynchronizedRenderers->SetRenderPass(this->GlassPass);
+    if (!this->FXAAPass)
+    {
+      this->FXAAPass = vtkSmartPointer<vtkOpenGLFXAAPass>::New();
+      this->FXAAPass->SetDelegatePass(this->GlassPass);
+    }
+    this->FXAAPass->SetFXAAOptions(this->GetRenderer()->GetFXAAOptions());
+    wanted = this->FXAAPass;
+  }
+  if (this->SynchronizedRenderers->GetRenderPass() != wanted)
+  {
+    this->SynchronizedRenderers->SetRenderPass(wanted);
   }
   this->ConfigureDelegate();
 }
@@ -122,4 +139,5 @@ void vtkGlassRenderView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "GlassPass: " << this->GlassPass << "\n";
   os << indent << "SSAOPass: " << this->SSAOPass << "\n";
   os << indent << "PeelingPass: " << this->PeelingPass << "\n";
+  os << indent << "FXAAPass: " << this->FXAAPass << "\n";
 }

@@ -8,8 +8,9 @@
  * render view. What ParaView's own default pass gets from the renderer is given to the
  * pass's delegate before each render: SSAO (a vtkSSAOPass as its opaque step, with the
  * renderer's radius, bias, kernel and blur) and depth peeling of translucent geometry (a
- * vtkDualDepthPeelingPass); FXAA, tone mapping and the orientation axes are passes and
- * renderers around this one and work as in the Render View.
+ * vtkDualDepthPeelingPass) and FXAA (the pass inside a vtkOpenGLFXAAPass, unless tone mapping
+ * puts ParaView's own FXAA pass around it); tone mapping and the orientation axes are passes
+ * and renderers around this one and work as in the Render View.
  *
  * ParaView 5.11 gives a representation no way to add a render pass to the ordinary Render
  * View (vtkPVSynchronizedRenderer owns and rebuilds the view's pass chain), hence this view.
@@ -24,6 +25,7 @@
 class vtkRefractionPass;
 class vtkSSAOPass;
 class vtkDualDepthPeelingPass;
+class vtkOpenGLFXAAPass;
 
 class REFRACTIONGLASSVIEWS_EXPORT vtkGlassRenderView : public vtkPVRenderView
 {
@@ -77,6 +79,7 @@ protected:
   vtkSmartPointer<vtkRefractionPass> GlassPass;
   vtkSmartPointer<vtkSSAOPass> SSAOPass;
   vtkSmartPointer<vtkDualDepthPeelingPass> PeelingPass;
+  vtkSmartPointer<vtkOpenGLFXAAPass> FXAAPass;
   int DelegateSSAO = -1;
   int DelegatePeeling = -1;
 

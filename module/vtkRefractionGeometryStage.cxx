@@ -1,7 +1,6 @@
 #include "vtkRefractionGeometryStage.h"
 
 #include "vtkActor.h"
-#include "vtkCellArray.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -23,10 +22,8 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
 #include <sstream>
-#include <unordered_map>
 #include <vector>
 
 vtkStandardNewMacro(vtkRefractionGeometryStage);
@@ -40,75 +37,6 @@ const char* const kImplTag = "//RF::Geometry::Impl";
 bool IsGlassMapper(vtkAbstractMapper* mapper, vtkProp* prop)
 {
   return vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && vtkRefractionPass::IsGlass(prop);
-}
-
-// A surface is open as a whole (a thin sheet) when its boundary is at least this many times
-// the square root of its area; below, it is a solid with holes.
-const double kOpenAsAWhole = 1.0;
-
-// The total length of the edges used by one polygon only (ends keyed by position, as the
-// closedness test keys them) and the area of the polygons, leaving out those of no area.
-void MeasureBoundary(vtkPolyData* poly, const std::vector<std::uint64_t>& keys,
-  double minimumArea2, double& length, double& area)
-{
-  struct Edge
-  {
-    int Uses = 0;
-    double Length = 0.0;
-  };
-  std::unordered_map<std::uint64_t, Edge> edges;
-  length = 0.0;
-  area = 0.0;
-  vtkCellArray* polys = poly->GetPolys();
-  vtkIdType count = 0;
-  const vtkIdType* ids = nullptr;
-  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
-  {
-    if (count < 3)
-    {
-      continue;
-    }
-    double a[3];
-    double b[3];
-    double c[3];
-    poly->GetPoint(ids[0], a);
-    double normal[3] = { 0.0, 0.0, 0.0 };
-    for (vtkIdType j = 1; j + 1 < count; ++j)
-    {
-      poly->GetPoint(ids[j], b);
-      poly->GetPoint(ids[j + 1], c);
-      const double ab[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-      const double ac[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-      double cross[3];
-      vtkMath::Cross(ab, ac, cross);
-      for (int k = 0; k < 3; ++k)
-      {
-        normal[k] += cross[k];
-      }
-    }
-    const double area2 = vtkMath::Dot(normal, normal);
-    if (area2 <= minimumArea2)
-    {
-      continue;
-    }
-    area += 0.5 * std::sqrt(area2);
-    for (vtkIdType j = 0; j < count; ++j)
-    {
-      const vtkIdType from = ids[j];
-      const vtkIdType to = ids[(j + 1) % count];
-      const std::uint64_t lo = std::min(keys[from], keys[to]);
-      const std::uint64_t hi = std::max(keys[from], keys[to]);
-      Edge& edge = edges[lo * 0x9E3779B97F4A7C15ULL ^ (hi + 0x632BE59BD9B4E019ULL)];
-      ++edge.Uses;
-      poly->GetPoint(from, b);
-      poly->GetPoint(to, c);
-      edge.Length = std::sqrt(vtkMath::Distance2BetweenPoints(b, c));
-    }
-  }
-  for (const auto& edge : edges)
-  {
-    length += edge.second.Uses == 1 ? edge.second.Length : 0.0;
-  }
 }
 }
 
@@ -138,10 +66,22 @@ void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
 {
   this->Glass = glass;
   this->MaterialIndex.clear();
+  this->SheetMaterialIndex.clear();
+  std::vector<vtkPolyData*> perPiece;
   for (size_t i = 0; i < glass.size(); ++i)
   {
     this->MaterialIndex[glass[i]] = static_cast<int>(i);
+    vtkPolyData* mesh = i < this->SheetPieceMaterial.size() && this->SheetPieceMaterial[i] >= 0
+      ? this->SurfaceModel->GetProp(glass[i]).PerPiece
+      : nullptr;
+    if (mesh)
+    {
+      this->SheetMaterialIndex[glass[i]] = this->SheetPieceMaterial[i];
+      perPiece.push_back(mesh);
+    }
   }
+  this->UsePieceSheets = !perPiece.empty();
+  this->PieceSheets->Retain(perPiece);
   this->NormalDistance = normalDistance;
   this->DataColour = dataColour;
   this->BackNearest = backNearest;
@@ -160,6 +100,10 @@ void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
   if (backNearest)
   {
     defines << "#define RF_BACK_NEAREST\n";
+  }
+  if (this->UsePieceSheets)
+  {
+    defines << "#define RF_PIECE_SHEETS\n";
   }
   this->Peel = peel;
   if (peel)
@@ -181,10 +125,7 @@ void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
     this->Defines = defines.str();
     this->DefinesTime.Modified();
   }
-  if (this->Surfaces.size() > 4 * glass.size() + 16)
-  {
-    this->Surfaces.clear(); // entries of polydata that went away
-  }
+  this->SurfaceModel->Prune(4 * glass.size() + 16); // entries of polydata that went away
   if (normalDistance)
   {
     for (vtkProp* prop : glass)
@@ -199,6 +140,7 @@ void vtkRefractionGeometryStage::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
   this->SHTransfer->ReleaseGraphicsResources(w);
+  this->PieceSheets->ReleaseGraphicsResources(w);
 }
 
 //------------------------------------------------------------------------------
@@ -229,6 +171,7 @@ void vtkRefractionGeometryStage::DrawProps(vtkOpenGLRenderer* ren, int stage)
   this->Renderer = nullptr;
   this->Stage = STAGE_NONE;
   this->SHTransfer->Unbind();
+  this->PieceSheets->Unbind();
   this->PostRender(&state);
   ostate->vtkglCullFace(static_cast<unsigned int>(cullMode));
 }
@@ -358,8 +301,9 @@ void vtkRefractionGeometryStage::DrawMask(vtkOpenGLRenderer* ren)
 }
 
 //------------------------------------------------------------------------------
-bool vtkRefractionGeometryStage::PreReplaceShaderValues(std::string& vertexShader, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
+bool vtkRefractionGeometryStage::PreReplaceShaderValues(std::string& vertexShader,
+  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper,
+  vtkProp* prop)
 {
   if (!IsGlassMapper(mapper, prop))
   {
@@ -387,6 +331,10 @@ bool vtkRefractionGeometryStage::PreReplaceShaderValues(std::string& vertexShade
       vertexShader, "//VTK::Normal::Dec", "//VTK::Normal::Dec\n" + declarations, false);
     vtkShaderProgram::Substitute(
       vertexShader, "//VTK::Normal::Impl", "//VTK::Normal::Impl\n" + body, false);
+  }
+  if (this->UsePieceSheets)
+  {
+    vtkRefractionPieceSheets::ReplaceShaderValues(vertexShader, geometryShader);
   }
   if (this->NormalDistance)
   {
@@ -467,6 +415,18 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
     program->SetUniformf("rfMaterial",
       material == this->MaterialIndex.end() ? 1.f : static_cast<float>(material->second + 1));
   }
+  if (this->UsePieceSheets && this->State && this->Renderer)
+  {
+    // A mesh whose pieces disagree: its sheet pieces' flags and material.
+    auto sheetMaterial = this->SheetMaterialIndex.find(prop);
+    vtkPolyData* mesh = sheetMaterial == this->SheetMaterialIndex.end()
+      ? nullptr
+      : this->SurfaceModel->GetProp(prop).PerPiece;
+    const int own = material == this->MaterialIndex.end() ? 1 : material->second + 1;
+    this->PieceSheets->Bind(program, mesh, mesh ? &this->SurfaceModel->GetMesh(mesh) : nullptr,
+      mesh ? sheetMaterial->second + 1 : own,
+      static_cast<vtkOpenGLRenderWindow*>(this->Renderer->GetRenderWindow()));
+  }
   if (program->IsUniformUsed("rfParallel"))
   {
     program->SetUniformi("rfParallel", this->Parallel ? 1 : 0);
@@ -496,7 +456,7 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
   }
   if (program->IsUniformUsed("rfWindingSign"))
   {
-    program->SetUniformi("rfWindingSign", this->GetSurface(prop).WindingSign);
+    program->SetUniformi("rfWindingSign", this->SurfaceModel->GetProp(prop).WindingSign);
   }
   this->CullHiddenFaces(prop);
   if (program->IsUniformUsed("rfHaveNormalDistance"))
@@ -523,169 +483,6 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
 }
 
 //------------------------------------------------------------------------------
-vtkRefractionGeometryStage::Surface vtkRefractionGeometryStage::GetSurface(vtkProp* prop)
-{
-  // Composite data: the blocks together. The winding follows their total signed volume; the
-  // faces are culled only when every block is closed; the prop is open (a thin sheet) only
-  // when every block is (vtkRefractionMaterials says which blocks disagree).
-  Surface total;
-  double volume = 0.0;
-  for (const auto& block : vtkRefractionMeshes::GetBlocks(prop))
-  {
-    const Surface& surface = this->GetMeshSurface(block.Mesh);
-    if (!surface.Polygons)
-    {
-      continue;
-    }
-    volume += surface.Volume;
-    total.Closed = total.Blocks == 0 ? surface.Closed : total.Closed && surface.Closed;
-    total.OpenBlocks += surface.Boundary ? 1 : 0;
-    ++total.Blocks;
-    total.Polygons = true;
-  }
-  total.Volume = volume;
-  total.WindingSign = volume < 0.0 ? -1 : 1;
-  total.Boundary = total.Blocks > 0 && total.OpenBlocks == total.Blocks;
-  return total;
-}
-
-//------------------------------------------------------------------------------
-const vtkRefractionGeometryStage::Surface& vtkRefractionGeometryStage::GetMeshSurface(
-  vtkPolyData* poly)
-{
-  auto cached = this->Surfaces.find(poly);
-  if (cached != this->Surfaces.end() && cached->second.Time == poly->GetMTime())
-  {
-    return cached->second;
-  }
-  Surface& surface = this->Surfaces[poly];
-  surface = Surface();
-  surface.Time = poly->GetMTime();
-  // The signed volume of a closed mesh is positive when its polygons wind counter-clockwise
-  // seen from outside (the OpenGL front face). Measured about the bounds' centre so that far
-  // offset coordinates keep their precision.
-  double bounds[6];
-  poly->GetBounds(bounds);
-  const double centre[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
-    0.5 * (bounds[4] + bounds[5]) };
-  double volume = 0.0;
-  // Closed and consistently oriented: every directed edge a->b has its partner b->a, so a sum
-  // of an antisymmetric function of the edges' ends vanishes. The ends are keyed by their
-  // position (quantized to 2^-20 of the bounds), not their ids, so that the duplicated points
-  // of a seam (a parametric torus, a sphere's poles) pair up as the surface does. Pseudo-random
-  // 64-bit values per key and wrapping arithmetic: a boundary edge leaves the sum non-zero
-  // (but for a chance of 2^-64); a mesh wound inconsistently counts as open. One pass, no edge
-  // table: re-contoured data is checked every time step.
-  const double extent = std::max(
-    { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-300 });
-  const vtkIdType numberOfPoints = poly->GetNumberOfPoints();
-  std::vector<std::uint64_t> keys[2];
-  keys[0].resize(numberOfPoints);
-  keys[1].resize(numberOfPoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    double p[3];
-    poly->GetPoint(i, p);
-    std::uint64_t key = 0;
-    for (int k = 0; k < 3; ++k)
-    {
-      const double unit = std::min(std::max((p[k] - bounds[2 * k]) / extent, 0.0), 1.0);
-      key = (key << 21) | static_cast<std::uint64_t>(std::llround(unit * 1048576.0));
-    }
-    for (int salt = 0; salt < 2; ++salt)
-    {
-      std::uint64_t x = key * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(salt + 1);
-      x ^= x >> 31;
-      x *= 0xBF58476D1CE4E5B9ULL;
-      x ^= x >> 29;
-      keys[salt][i] = x;
-    }
-  }
-  std::uint64_t edgeSum = 0;
-  // Boundary edges, whatever the winding: a symmetric function of the ends, XOR-summed over
-  // the edges' uses, vanishes when every edge is used an even number of times.
-  std::uint64_t edgeParity = 0;
-  vtkCellArray* polys = poly->GetPolys();
-  vtkIdType count = 0;
-  const vtkIdType* ids = nullptr;
-  double a[3];
-  double b[3];
-  double c[3];
-  // Polygons of no area (repeated or collinear points) cover nothing: their edges are left
-  // out of both tests, so degenerate slivers do not make a closed surface open (a genuine
-  // surface made partly of such slivers would count as open, and be drawn as a thin sheet).
-  const double minimumArea2 = 1e-24 * extent * extent * extent * extent;
-  for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
-  {
-    if (count < 3)
-    {
-      continue;
-    }
-    poly->GetPoint(ids[0], a);
-    for (int k = 0; k < 3; ++k)
-    {
-      a[k] -= centre[k];
-    }
-    double area[3] = { 0.0, 0.0, 0.0 };
-    for (vtkIdType j = 1; j + 1 < count; ++j)
-    {
-      poly->GetPoint(ids[j], b);
-      poly->GetPoint(ids[j + 1], c);
-      for (int k = 0; k < 3; ++k)
-      {
-        b[k] -= centre[k];
-        c[k] -= centre[k];
-      }
-      volume += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-        a[2] * (b[0] * c[1] - b[1] * c[0]);
-      const double ab[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-      const double ac[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
-      area[0] += ab[1] * ac[2] - ab[2] * ac[1];
-      area[1] += ab[2] * ac[0] - ab[0] * ac[2];
-      area[2] += ab[0] * ac[1] - ab[1] * ac[0];
-    }
-    double longest2 = 0.0;
-    for (vtkIdType j = 0; j < count; ++j)
-    {
-      poly->GetPoint(ids[j], b);
-      poly->GetPoint(ids[(j + 1) % count], c);
-      longest2 = std::max(longest2,
-        (b[0] - c[0]) * (b[0] - c[0]) + (b[1] - c[1]) * (b[1] - c[1]) + (b[2] - c[2]) * (b[2] - c[2]));
-    }
-    // Twice the area below 1e-5 of the longest edge squared: a sliver (height under 1e-5 of
-    // its base), as collinear points rounded to floats make.
-    const double area2 = area[0] * area[0] + area[1] * area[1] + area[2] * area[2];
-    if (area2 <= minimumArea2 || area2 <= 1e-10 * longest2 * longest2)
-    {
-      continue;
-    }
-    for (vtkIdType j = 0; j < count; ++j)
-    {
-      const vtkIdType from = ids[j];
-      const vtkIdType to = ids[(j + 1) % count];
-      edgeSum += keys[0][from] * keys[1][to] - keys[0][to] * keys[1][from];
-      edgeParity ^= keys[0][from] * keys[1][to] + keys[0][to] * keys[1][from];
-    }
-  }
-  surface.Volume = volume;
-  surface.WindingSign = volume < 0.0 ? -1 : 1;
-  surface.Polygons = polys->GetNumberOfCells() > 0 || poly->GetNumberOfStrips() > 0;
-  surface.Closed = edgeSum == 0 && poly->GetNumberOfStrips() == 0 && polys->GetNumberOfCells() > 0;
-  surface.Boundary = edgeParity != 0 && poly->GetNumberOfStrips() == 0;
-  if (surface.Boundary)
-  {
-    // Open, but how much? A scan with a few small holes, or a contour that touches the domain
-    // at a few cells, is a solid with holes; a height field or a bowl is open as a whole. The
-    // measure: the boundary's length against the square root of the area (4 for a square
-    // sheet, 2.5 for a hemisphere, 0.18 for a sphere with a cap of a tenth of its radius cut).
-    MeasureBoundary(poly, keys[0], minimumArea2, surface.BoundaryLength, surface.Area);
-    surface.Boundary = surface.BoundaryLength >= kOpenAsAWhole * std::sqrt(surface.Area);
-    surface.SmallHoles = !surface.Boundary;
-  }
-  return surface;
-}
-
-//------------------------------------------------------------------------------
 void vtkRefractionGeometryStage::CullHiddenFaces(vtkProp* prop)
 {
   // vtkOpenGLProperty::Render has just set the actor's own culling; this runs after it, just
@@ -698,7 +495,7 @@ void vtkRefractionGeometryStage::CullHiddenFaces(vtkProp* prop)
     this->State->vtkglDisable(GL_CULL_FACE);
     return;
   }
-  const Surface& surface = this->GetSurface(prop);
+  const vtkRefractionSurfaceModel::Prop surface = this->SurfaceModel->GetProp(prop);
   if (!this->State || !surface.Closed ||
     (this->Stage != STAGE_FRONT && this->Stage != STAGE_BACK))
   {
@@ -728,7 +525,7 @@ bool vtkRefractionGeometryStage::IsOutwardFront(vtkProp* prop)
     }
     mirror = vtkMath::Determinant3x3(m);
   }
-  return (this->GetSurface(prop).WindingSign > 0) == (mirror >= 0.0);
+  return (this->SurfaceModel->GetProp(prop).WindingSign > 0) == (mirror >= 0.0);
 }
 
 //------------------------------------------------------------------------------

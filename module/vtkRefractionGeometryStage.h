@@ -14,7 +14,9 @@
 
 #include "vtkOpenGLRenderPass.h"
 #include "vtkNew.h"       // For members
+#include "vtkRefractionPieceSheets.h" // For members
 #include "vtkRefractionSHTransfer.h" // For members
+#include "vtkRefractionSurfaceModel.h" // For members
 #include "vtkWeakPointer.h" // For members
 
 #include <map>    // For members
@@ -70,17 +72,14 @@ public:
   /// Props drawn by the last draw.
   int GetNumberOfDrawnProps() const { return this->NumberOfRenderedProps; }
 
-  /// Whether a prop's surface has boundary edges (an open sheet: no back surface to find).
-  bool HasBoundary(vtkProp* prop, int* openBlocks = nullptr, int* blocks = nullptr)
+  /// Per glass prop, the material of its thin-sheet pieces, or -1
+  /// (vtkRefractionMaterials::GetSheetPieceMaterial); set before Configure.
+  void SetSheetPieceMaterials(const std::vector<int>& materials)
   {
-    const Surface surface = this->GetSurface(prop);
-    if (openBlocks && blocks)
-    {
-      *openBlocks = surface.OpenBlocks;
-      *blocks = surface.Blocks;
-    }
-    return surface.Boundary;
+    this->SheetPieceMaterial = materials;
   }
+  /// The glass meshes' surface model (solid or thin sheet, per connected piece).
+  vtkRefractionSurfaceModel* GetSurfaceModel() { return this->SurfaceModel; }
 
   void Render(const vtkRenderState* s) override;
   bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
@@ -108,26 +107,6 @@ private:
     const std::vector<int>& colours, int depth, double clearDepth, unsigned int depthFunc,
     int stage);
   void DrawProps(vtkOpenGLRenderer* ren, int stage);
-  /// Orientation of a prop's polygons: +1 counter-clockwise seen from outside (the OpenGL
-  /// front face), -1 inward; `closed` when every edge has a partner of opposite direction.
-  struct Surface
-  {
-    vtkMTimeType Time = 0;
-    double Volume = 0.0; ///< signed, about the bounds' centre
-    int WindingSign = 1;
-    bool Polygons = false; ///< any polygon or strip
-    bool Closed = false;   ///< closed and consistently wound: faces can be culled
-    bool Boundary = false;   ///< open as a whole: edges used once, long against the area
-    bool SmallHoles = false; ///< edges used once, but short: a solid with holes
-    double BoundaryLength = 0.0;
-    double Area = 0.0;
-    int Blocks = 0;        ///< the prop's: meshes with polygons (composite data: blocks)
-    int OpenBlocks = 0;    ///< the prop's: of those, the ones with a boundary
-  };
-  /// The prop's meshes together (every block of composite data).
-  Surface GetSurface(vtkProp* prop);
-  /// One mesh, cached until it is modified.
-  const Surface& GetMeshSurface(vtkPolyData* poly);
   /// Whether every mesh of the prop has ISR's d_N array.
   bool HasNormalDistance(vtkProp* prop);
   /// Whether the prop's outward side is the GL front face on screen (winding and mirroring).
@@ -137,7 +116,11 @@ private:
 
   std::vector<vtkProp*> Glass;
   std::map<vtkProp*, int> MaterialIndex;
-  std::map<vtkPolyData*, Surface> Surfaces;
+  std::vector<int> SheetPieceMaterial;
+  std::map<vtkProp*, int> SheetMaterialIndex; ///< props whose sheet pieces are told apart
+  vtkNew<vtkRefractionPieceSheets> PieceSheets;
+  bool UsePieceSheets = false;
+  vtkNew<vtkRefractionSurfaceModel> SurfaceModel;
   vtkOpenGLState* State = nullptr;
   vtkOpenGLRenderer* Renderer = nullptr; ///< during a draw
   std::vector<vtkWeakPointer<vtkMapper>> NormalDistanceMappers;

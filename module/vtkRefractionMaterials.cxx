@@ -8,18 +8,21 @@
 #include "vtkDataSet.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerKey.h"
+#include "vtkMatrix4x4.h"
 #include "vtkMapper.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
-#include "vtkRefractionGeometryStage.h"
 #include "vtkRefractionMeshes.h"
 #include "vtkRefractionPass.h"
+#include "vtkRefractionSurfaceModel.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
+#include <string>
 
 vtkStandardNewMacro(vtkRefractionMaterials);
 
@@ -79,6 +82,58 @@ double Diagonal(vtkProp* prop)
   return std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) +
     (b[5] - b[4]) * (b[5] - b[4]));
 }
+
+// The diagonal of model bounds b placed by the actor's matrix (the world box of its corners).
+double PlacedDiagonal(vtkProp* prop, const double b[6])
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  vtkBoundingBox box;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    double p[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)], 1.0 };
+    if (actor)
+    {
+      actor->GetMatrix()->MultiplyPoint(p, p);
+    }
+    box.AddPoint(p[0] / p[3], p[1] / p[3], p[2] / p[3]);
+  }
+  return box.IsValid() ? box.GetDiagonalLength() : 0.0;
+}
+
+// What a prop's sheet pieces are, for the warning: "n of m pieces (boundary L against square
+// root of area A, ...)" per mesh with sheet pieces, with the block named in composite data;
+// without the measures, what the warning is said again for when it changes.
+std::string DescribeSheetPieces(vtkProp* prop, vtkRefractionSurfaceModel* surfaces, bool measures)
+{
+  std::ostringstream text;
+  const bool composite = vtkRefractionMeshes::IsComposite(prop);
+  for (const auto& block : vtkRefractionMeshes::GetBlocks(prop))
+  {
+    const vtkRefractionSurfaceModel::Mesh& mesh = surfaces->GetMesh(block.Mesh);
+    if (mesh.SheetPieces == 0)
+    {
+      continue;
+    }
+    text << (text.str().empty() ? " " : "; ")
+         << vtkRefractionMeshes::DescribeBlock(block, composite) << mesh.SheetPieces << " of "
+         << mesh.Pieces << " pieces";
+    for (size_t i = 0; measures && i < mesh.SheetMeasures.size(); ++i)
+    {
+      text << (i ? ", " : " (boundary ") << mesh.SheetMeasures[i].first
+           << " against the square root of the area " << mesh.SheetMeasures[i].second;
+    }
+    if (measures)
+    {
+      text << (mesh.SheetPieces > static_cast<int>(mesh.SheetMeasures.size()) ? ", ..." : "")
+           << ")";
+    }
+    if (composite && mesh.Mixed())
+    {
+      text << " drawn as a solid block";
+    }
+  }
+  return text.str();
+}
 }
 
 //------------------------------------------------------------------------------
@@ -93,7 +148,7 @@ void vtkRefractionMaterials::PrintSelf(ostream& os, vtkIndent indent)
 
 //------------------------------------------------------------------------------
 void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
-  vtkRefractionGeometryStage* surfaces, bool dataColour, double absorptionDistance,
+  vtkRefractionSurfaceModel* surfaces, bool dataColour, double absorptionDistance,
   double thinSheetThickness)
 {
   this->IOR.clear();
@@ -105,8 +160,11 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
   this->HasHighlights = false;
   this->DataColour = false;
   std::vector<vtkProp*> sheets;
+  std::vector<std::string> sheetPieces; // per prop in sheets: which pieces
+  std::vector<std::pair<size_t, double>> pieceSheets; // material, thickness of its sheet pieces
+  this->SheetPieceMaterial.assign(glass.size(), -1);
   std::vector<vtkProp*> mixed; // composite data with open and closed blocks
-  std::vector<std::pair<int, int>> mixedCounts;
+  std::vector<std::array<int, 3>> mixedCounts; // open blocks, blocks of both, blocks
   double largest = 0.0;
   vtkBoundingBox all;
   for (vtkProp* prop : glass)
@@ -125,15 +183,15 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
     const int model = keys && keys->Has(vtkRefractionPass::SURFACE_MODEL())
       ? keys->Get(vtkRefractionPass::SURFACE_MODEL())
       : vtkRefractionPass::SURFACE_AUTO;
-    int openBlocks = 0;
-    int blocks = 0;
-    const bool open = surfaces->HasBoundary(prop, &openBlocks, &blocks);
+    const vtkRefractionSurfaceModel::Prop surface = surfaces->GetProp(prop);
     const bool sheet = model == vtkRefractionPass::SURFACE_THIN_SHEET ||
-      (model == vtkRefractionPass::SURFACE_AUTO && open);
-    if (model == vtkRefractionPass::SURFACE_AUTO && openBlocks > 0 && openBlocks < blocks)
+      (model == vtkRefractionPass::SURFACE_AUTO && surface.Boundary);
+    if (model == vtkRefractionPass::SURFACE_AUTO &&
+      ((surface.OpenBlocks > 0 && surface.OpenBlocks < surface.Blocks) ||
+        (surface.MixedBlocks > 0 && !surface.PerPiece)))
     {
       mixed.push_back(prop);
-      mixedCounts.emplace_back(openBlocks, blocks);
+      mixedCounts.push_back({ surface.OpenBlocks, surface.MixedBlocks, surface.Blocks });
     }
     const double diagonal = Diagonal(prop);
     largest = std::max(largest, diagonal);
@@ -142,10 +200,22 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
     {
       thickness = thinSheetThickness > 0.0 ? thinSheetThickness : 0.01 * diagonal;
       thickness = thickness > 0.0 ? thickness : 1e-3;
-      if (model == vtkRefractionPass::SURFACE_AUTO)
-      {
-        sheets.push_back(prop);
-      }
+    }
+    if (model == vtkRefractionPass::SURFACE_AUTO && !sheet && surface.PerPiece)
+    {
+      // The sheet pieces of a mesh whose pieces disagree: a material of their own (the same
+      // glass, a sheet as thick as theirs alone would be), chosen per fragment.
+      const vtkRefractionSurfaceModel::Mesh& mesh = surfaces->GetMesh(surface.PerPiece);
+      double pieceThickness = thinSheetThickness > 0.0
+        ? thinSheetThickness
+        : 0.01 * PlacedDiagonal(prop, mesh.SheetBounds);
+      pieceThickness = pieceThickness > 0.0 ? pieceThickness : 1e-3;
+      pieceSheets.emplace_back(this->IOR.size() - 1, pieceThickness);
+    }
+    if (model == vtkRefractionPass::SURFACE_AUTO && (sheet || surface.PerPiece))
+    {
+      sheets.push_back(prop);
+      sheetPieces.push_back(DescribeSheetPieces(prop, surfaces, false));
     }
     this->Sheet.push_back(static_cast<float>(thickness));
     vtkActor* actor = vtkActor::SafeDownCast(prop);
@@ -163,6 +233,20 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
     this->Highlights.push_back(static_cast<float>(property ? property->GetSpecularPower() : 1.0));
     this->HasHighlights = this->HasHighlights || specular > 0.0;
     this->DataColour = this->DataColour || (dataColour && HasDataColour(prop));
+  }
+  // The materials of the sheet pieces follow the props' own.
+  for (const auto& pieces : pieceSheets)
+  {
+    const size_t of = pieces.first;
+    this->SheetPieceMaterial[of] = static_cast<int>(this->IOR.size());
+    this->IOR.push_back(this->IOR[of]);
+    this->RedIOR.push_back(this->RedIOR[of]);
+    this->BlueIOR.push_back(this->BlueIOR[of]);
+    this->Sheet.push_back(static_cast<float>(pieces.second));
+    for (int k = 0; k < 4; ++k)
+    {
+      this->Highlights.push_back(this->Highlights[4 * of + k]);
+    }
   }
   this->LargestDiagonal = largest;
   this->ExtentDiagonal = all.IsValid() ? all.GetDiagonalLength() : 0.0;
@@ -191,34 +275,42 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
       this->AbsorptionDistance = this->DerivedAbsorptionDistance;
     }
   }
-  // Say once which props were taken for thin sheets (until the set changes).
-  if (!sheets.empty() && sheets != this->SheetsReported)
+  // Say once which pieces of which props were taken for thin sheets, and why (until the set
+  // or its pieces change).
+  if (!sheets.empty() &&
+    (sheets != this->SheetsReported || sheetPieces != this->SheetPiecesReported))
   {
     std::ostringstream names;
-    for (vtkProp* prop : sheets)
+    for (size_t i = 0; i < sheets.size(); ++i)
     {
-      names << " " << prop->GetClassName() << " " << prop;
+      names << (i ? "; " : " ") << sheets[i]->GetClassName() << " " << sheets[i] << ":"
+            << DescribeSheetPieces(sheets[i], surfaces, true);
     }
     vtkWarningMacro("Glass prop(s)" << names.str()
-                                    << " are open as a whole (edges used by one polygon, as "
-                                       "long as the square root of the area or longer; small "
-                                       "holes leave a solid): drawn as thin sheets "
+                                    << ": these connected pieces are open as a whole (their "
+                                       "boundary, the edges used by one polygon, is as long as "
+                                       "the square root of their area or longer; a piece with "
+                                       "small holes stays a solid) and are drawn as thin sheets; "
+                                       "any other pieces stay solids "
                                        "(vtkRefractionPass::SetSurfaceModel to choose).");
   }
   this->SheetsReported = sheets;
+  this->SheetPiecesReported = sheetPieces;
   if (!mixed.empty() && mixed != this->MixedReported)
   {
     std::ostringstream names;
     for (size_t i = 0; i < mixed.size(); ++i)
     {
-      names << " " << mixed[i]->GetClassName() << " " << mixed[i] << " (" << mixedCounts[i].first
-            << " of " << mixedCounts[i].second << " blocks open)";
+      names << " " << mixed[i]->GetClassName() << " " << mixed[i] << " (" << mixedCounts[i][0]
+            << " of " << mixedCounts[i][2] << " blocks open, " << mixedCounts[i][1]
+            << " of open and closed pieces)";
     }
     vtkWarningMacro("Glass prop(s)" << names.str()
-                                    << " hold open and closed blocks: the surface model is "
-                                       "decided per actor, so all are drawn as solids (put the "
-                                       "open blocks in an actor of their own to draw them as "
-                                       "thin sheets).");
+                                    << " hold open and closed blocks (or blocks of open and "
+                                       "closed pieces): VTK 9.1's composite mapper uploads no "
+                                       "extra vertex data, so composite data is decided per "
+                                       "actor, and all are drawn as solids (put the open blocks "
+                                       "in an actor of their own to draw them as thin sheets).");
   }
   this->MixedReported = mixed;
 }

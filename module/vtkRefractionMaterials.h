@@ -3,9 +3,10 @@
  * @brief   The glass props' materials of one frame: index of refraction, surface model, colour.
  *
  * Per glass prop (its position is its material index in the G-buffer): the index of
- * refraction, the thin-sheet thickness (0 for a solid; open surfaces become sheets unless the
- * prop's SURFACE_MODEL key says otherwise, and the props taken for sheets are named once in a
- * warning), and whether any prop has a colour of its own (actor colour, scalar colours,
+ * refraction, the thin-sheet thickness (0 for a solid; surfaces open as a whole become sheets
+ * unless the prop's SURFACE_MODEL key says otherwise; a mesh whose connected pieces disagree
+ * keeps the prop's material for its solid pieces and gets one more material, after the
+ * props', for its sheet pieces; the pieces taken for sheets are named once in a warning), and whether any prop has a colour of its own (actor colour, scalar colours,
  * edges), with the absorption distance of the tint.
  */
 #ifndef vtkRefractionMaterials_h
@@ -13,10 +14,11 @@
 
 #include "vtkObject.h"
 
+#include <string> // For members
 #include <vector> // For members
 
 class vtkProp;
-class vtkRefractionGeometryStage;
+class vtkRefractionSurfaceModel;
 
 class vtkRefractionMaterials : public vtkObject
 {
@@ -30,7 +32,7 @@ public:
    * the method may tint at all; `absorptionDistance` and `thinSheetThickness` are the pass's
    * settings (0: automatic from the props' bounds).
    */
-  void Update(const std::vector<vtkProp*>& glass, vtkRefractionGeometryStage* surfaces,
+  void Update(const std::vector<vtkProp*>& glass, vtkRefractionSurfaceModel* surfaces,
     bool dataColour, double absorptionDistance, double thinSheetThickness);
 
   const std::vector<float>& GetIndexOfRefraction() const { return this->IOR; }
@@ -41,6 +43,9 @@ public:
   /// Whether a glass prop disperses (vtkRefractionPass::SetDispersion).
   bool GetDispersion() const { return this->Dispersion; }
   const std::vector<float>& GetSheetThickness() const { return this->Sheet; }
+  /// Per glass prop, the material of its thin-sheet pieces when its mesh's connected pieces
+  /// disagree (a material after the props', with the prop's indices), else -1.
+  const std::vector<int>& GetSheetPieceMaterial() const { return this->SheetPieceMaterial; }
   /// Whether a glass prop has a colour of its own (then the G-buffer keeps the data colour).
   bool GetDataColour() const { return this->DataColour; }
   /// The tint's absorption distance (0 without data colour).
@@ -69,6 +74,7 @@ private:
   std::vector<float> BlueIOR;
   bool Dispersion = false;
   std::vector<float> Sheet;
+  std::vector<int> SheetPieceMaterial;
   std::vector<float> Highlights;
   bool HasHighlights = false;
   bool DataColour = false;
@@ -78,6 +84,7 @@ private:
   double LargestDiagonal = 0.0;
   double ExtentDiagonal = 0.0;
   std::vector<vtkProp*> SheetsReported;
+  std::vector<std::string> SheetPiecesReported;
   std::vector<vtkProp*> MixedReported; ///< composite props with open and closed blocks
 };
 

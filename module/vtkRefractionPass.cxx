@@ -508,7 +508,7 @@ void vtkRefractionPass::RenderGlass(
     wanted[vtkRefractionTargets::SCENE_COLOR] = true;
     wanted[vtkRefractionTargets::SCENE_DEPTH] = true;
   }
-  this->Materials->Update(glass, this->GeometryStage,
+  this->Materials->Update(glass, this->GeometryStage->GetSurfaceModel(),
     this->DataColour && method->SupportsSceneRefraction(), this->AbsorptionDistance,
     this->ThinSheetThickness);
   const bool dataColour = this->Materials->GetDataColour();
@@ -568,6 +568,7 @@ void vtkRefractionPass::RenderGlass(
   }
   const int peelLayers = method->GetPeelLayers(this);
   this->GeometryStage->SetSHSmoothing(this->SHSmoothing);
+  this->GeometryStage->SetSheetPieceMaterials(this->Materials->GetSheetPieceMaterial());
   this->GeometryStage->Configure(glass, method->NeedsNormalDistance(), dataColour,
     this->BackSurface == BACK_SURFACE_NEAREST, peelLayers > 1, method->NeedsSHTransfer(),
     this->InverseProjectionGL, this->Parallel);

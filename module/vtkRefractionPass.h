@@ -109,8 +109,10 @@ public:
   static vtkInformationIntegerKey* GLASS();
   static vtkInformationDoubleKey* INDEX_OF_REFRACTION();
   /**
-   * How a glass prop's surface is modelled: SURFACE_AUTO (the key absent: a thin sheet when
-   * the mesh has boundary edges, a solid otherwise), SURFACE_SOLID (refract in, search the
+   * How a glass prop's surface is modelled: SURFACE_AUTO (the key absent: decided per
+   * connected piece of the mesh, a thin sheet where the piece is open as a whole, its boundary
+   * edges at least as long as the square root of its area, a solid otherwise, small holes
+   * included; composite data per block), SURFACE_SOLID (refract in, search the
    * exit, refract out) or SURFACE_THIN_SHEET (a slab of ThinSheetThickness: the ray is offset
    * and tinted, and leaves in its own direction; no exit search).
    */

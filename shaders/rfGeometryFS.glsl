@@ -39,6 +39,15 @@ in vec4 rfSHExitVSOut; // the SH method's exit direction (view) and length (rfSH
 uniform sampler2D rfPeelPrevious;
 uniform int rfOutwardFront;
 #endif
+#ifdef RF_PIECE_SHEETS
+// A mesh whose connected pieces disagree (vtkRefractionSurfaceModel): 1 on its thin-sheet
+// pieces, which take the material rfSheetMaterial (its solid pieces keep rfMaterial).
+in float rfPieceSheetVSOut;
+uniform float rfSheetMaterial;
+#define RF_FRAGMENT_MATERIAL (rfPieceSheetVSOut > 0.5 ? rfSheetMaterial : rfMaterial)
+#else
+#define RF_FRAGMENT_MATERIAL rfMaterial
+#endif
 #ifdef RF_GBUFFER_NORMAL_DISTANCE
 in float rfNormalDistanceVSOut;
 uniform int rfHaveNormalDistance;
@@ -101,7 +110,7 @@ vec3 rfReconstructPositionVC()
       }
       bool rfOutwardToViewer = gl_FrontFacing == (rfOutwardFront == 1);
       gl_FragData[0] = vec4(rf_oct_encode(dot(rfN, rfV) > 0.0 ? -rfN : rfN), -rfP.z,
-        rfOutwardToViewer ? rfMaterial : -rfMaterial);
+        rfOutwardToViewer ? RF_FRAGMENT_MATERIAL : -RF_FRAGMENT_MATERIAL);
     }
     else
 #endif
@@ -121,7 +130,8 @@ vec3 rfReconstructPositionVC()
     }
     else
     {
-      gl_FragData[0] = vec4(rf_oct_encode(dot(rfN, rfV) > 0.0 ? -rfN : rfN), -rfP.z, rfMaterial);
+      gl_FragData[0] =
+        vec4(rf_oct_encode(dot(rfN, rfV) > 0.0 ? -rfN : rfN), -rfP.z, RF_FRAGMENT_MATERIAL);
 #ifdef RF_GBUFFER_COLOUR
       // Literal indices: VTK maps gl_FragData[n] to its outputs by their text.
       gl_FragData[1] = vec4(clamp(rfDataColour.rgb, 0.0, 1.0), RF_EDGE_MIX);

@@ -92,6 +92,9 @@ const char* rf_status_message(rf_status s)
     case RF_ERR_EMPTY_RANGE:
       return "the depth range is empty or not in front of the camera"
              " (need 0 < depth_min <= depth_max, and depth_min < depth_max to search)";
+    case RF_ERR_BAD_MESH:
+      return "a count is negative, or a polygon names a point (or a point a class) that does"
+             " not exist";
   }
   return "unknown status";
 }

@@ -18,7 +18,8 @@ typedef enum rf_status
   RF_ERR_STEPS_OUT_OF_RANGE,
   RF_ERR_ABSORPTION_NEGATIVE,
   RF_ERR_DEGENERATE_DIRECTION,
-  RF_ERR_EMPTY_RANGE
+  RF_ERR_EMPTY_RANGE,
+  RF_ERR_BAD_MESH /* a mesh's counts or ids out of range (rf_pieces) */
 } rf_status;
 
 /* The paper bounds the CBS error by 0.5^steps (section 3.3); 16 steps already

@@ -59,7 +59,7 @@ static void test_messages(void)
 {
   const rf_status all[] = { RF_OK, RF_TIR, RF_ERR_NULL_ARGUMENT, RF_ERR_NOT_FINITE,
     RF_ERR_IOR_NOT_POSITIVE, RF_ERR_STEPS_OUT_OF_RANGE, RF_ERR_ABSORPTION_NEGATIVE,
-    RF_ERR_DEGENERATE_DIRECTION, RF_ERR_EMPTY_RANGE };
+    RF_ERR_DEGENERATE_DIRECTION, RF_ERR_EMPTY_RANGE, RF_ERR_BAD_MESH };
   const int count = (int)(sizeof(all) / sizeof(all[0]));
   const char* unknown = rf_status_message((rf_status)99);
   int i;

@@ -118,14 +118,15 @@ def psnr(a, b):
     return 100.0 if mse == 0 else 10.0 * numpy.log10(255.0 ** 2 / mse)
 
 
-def grown(mask):
-    """The mask and the pixels next to it (a silhouette's partly covered pixels differ by
-    rasterization between the Surface and Glass pictures)."""
+def grown(mask, steps=1):
+    """The mask and the pixels up to steps pixels next to it."""
     result = mask.copy()
-    result[1:, :] |= mask[:-1, :]
-    result[:-1, :] |= mask[1:, :]
-    result[:, 1:] |= mask[:, :-1]
-    result[:, :-1] |= mask[:, 1:]
+    for _ in range(steps):
+        before = result.copy()
+        result[1:, :] |= before[:-1, :]
+        result[:-1, :] |= before[1:, :]
+        result[:, 1:] |= before[:, :-1]
+        result[:, :-1] |= before[:, 1:]
     return result
 
 
@@ -137,6 +138,7 @@ def check_that(condition, message):
 
 def case_scene(scene):
     view = scene.view
+    background_colour = scene.picture("scene_background")[0, 0]
     wall(view)
     glass_source = blob()
     scene.look()
@@ -167,8 +169,9 @@ def case_scene(scene):
             % (changed.sum(), footprint.sum()))
     # The footprint here counts the silhouette's partly covered pixels too (a surface over a
     # few of a pixel's samples changes it by a level or two; the glass is drawn from the
-    # pixel's centre and can cover it whole).
-    touched = grown(differing(surface, without, tolerance=0))
+    # pixel's centre and can cover it whole), and the pixels FXAA (on in ParaView by default)
+    # blends with the silhouette: up to 3 pixels away (measured: 2).
+    touched = grown(differing(surface, without, tolerance=0), 3)
     outside = differing(refracted, without) & ~touched
     check_that(not outside.any(), "the glass changes nothing outside its footprint (%d pixels "
             "outside it differ)" % outside.sum())
@@ -186,8 +189,8 @@ def case_scene(scene):
     reddish = (inside[:, 0] > inside[:, 2] + 60).mean()
     check_that(reddish < 0.02, "without scene refraction the stripes do not show (%.1f %% red)"
             % (100 * reddish))
-    # ... and the glass shows the environment: the view's background colour (the corner).
-    off = numpy.abs(inside - no_scene[0, 0]).max(axis=1)
+    # ... and the glass shows the environment: the view's background colour.
+    off = numpy.abs(inside - background_colour).max(axis=1)
     check_that(numpy.median(off) <= 12, "without scene refraction the glass shows the "
             "background (median %d levels from it)" % numpy.median(off))
 

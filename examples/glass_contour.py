@@ -3,7 +3,7 @@
 
 A contour of a scalar field (Gaussian blobs from vtkGaussianSplatter through
 vtkFlyingEdges3D) is marked as glass and drawn by vtkRefractionPass over the built-in
-environment, beside an opaque cone. Run it with the package on PYTHONPATH (see README.md, "Using it from Python"):
+environment, beside an opaque cone. Run it with the package on PYTHONPATH (see docs/user-guide.md, "Using it from Python"):
 
     python3 examples/glass_contour.py                   # a window (needs a display)
     python3 examples/glass_contour.py --output glass.png --size 400

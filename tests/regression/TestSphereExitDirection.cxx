@@ -151,7 +151,7 @@ int main(int, char*[])
               "%.4f (radius 1); coverage mismatches %d\n",
     ior, angles.size(), glass->GetSearchSteps(), mean, p95, angles.back(), worstInner, worstP2,
     coverageMismatch);
-  // Tolerances (stated in the README), about 3x what llvmpipe measures (mean 0.028 deg, 0.061
+  // Tolerances (stated in docs/tests.md), about 3x what llvmpipe measures (mean 0.028 deg, 0.061
   // deg inside 0.9 R, P2 0.039): the search with its secant step on a 256-sided polygonal
   // sphere read from a 200 px texture. The paper's search alone (no secant) misses them.
   RF_REQUIRE(coverageMismatch < 100, "glass pixels do not match the sphere's silhouette");

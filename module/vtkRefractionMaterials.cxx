@@ -307,7 +307,7 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
     }
     vtkWarningMacro("Glass prop(s)" << names.str()
                                     << " hold open and closed blocks (or blocks of open and "
-                                       "closed pieces): VTK 9.1's composite mapper uploads no "
+                                       "closed pieces): VTK's composite mapper (9.1, 9.2) uploads no "
                                        "extra vertex data, so composite data is decided per "
                                        "actor, and all are drawn as solids (put the open blocks "
                                        "in an actor of their own to draw them as thin sheets).");

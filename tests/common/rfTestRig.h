@@ -91,7 +91,9 @@ protected:
     std::fprintf(stderr, "[vtk %s] %s", kind, text ? text : "");
   }
 };
-vtkStandardNewMacro(MessageLog);
+// inline: a test program may include this header from more than one file (the stability
+// suite does), and New() must then be defined once.
+inline vtkStandardNewMacro(MessageLog);
 
 inline MessageLog* InstallLog()
 {
@@ -153,7 +155,7 @@ public:
 protected:
   ProbePass() = default;
 };
-vtkStandardNewMacro(ProbePass);
+inline vtkStandardNewMacro(ProbePass);
 
 //------------------------------------------------------------------------------
 // One rendered frame: the float colour and the pass's debug arrays, per pixel, bottom row first.

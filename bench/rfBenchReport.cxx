@@ -1,0 +1,264 @@
+#include "rfBenchReport.h"
+
+#include "rfBenchTiming.h"
+#include "vtkRefractionPass.h"
+
+#include <vtkAxis.h>
+#include <vtkChartLegend.h>
+#include <vtkChartMatrix.h>
+#include <vtkChartXY.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkFloatArray.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPlot.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
+#include <vtkTable.h>
+#include <vtkVector.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <utility>
+
+namespace rfbench
+{
+std::string Db(double v)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), v < 0 ? "-" : "%.1f", v);
+  return text;
+}
+
+bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
+  const std::string& renderer, const std::string& windowPath, const std::string& run)
+{
+  std::ofstream f(path);
+  char line[1024];
+  f << "# Error against run time\n\nRenderer: " << renderer << " (" << windowPath << "). "
+    << run << "\n\n"
+    << "How to read it. Every row (a setting on a mesh at a size) was timed together with a "
+       "plain VTK render of the same mesh right after it, repeated in one shuffled order; "
+       "`ms` and `ratio` (glass frame time over that plain render) are medians over the "
+       "repeats with [min-max] beside them; each repeat is itself the median of the timed "
+       "frames after 5 warm-up frames. Errors are on glass pixels only (where the pass and "
+       "the reference's pixel centre both see glass), against the Embree reference: `two` is "
+       "the two-interface reference (the approximation's own error), `full` the Whitted "
+       "reference (depth 8, Fresnel splits, TIR), `full SS` the full reference averaged over "
+       "N x N rays per pixel (the anti-aliased truth a camera sees); `model vs full SS` is the "
+       "two-interface reference, supersampled too, against `full SS` on the same pixels: the "
+       "best a two-interface method can read there. `AA`: the pass's anti-aliasing "
+       "(vtkRefractionPass::SetAntiAliasing); `TIR 2`: two total internal reflections followed "
+       "(SetTIRBounces). `TIR` / `rest`: PSNR "
+       "against `full SS` on the pixels where the two-interface reference's ray is totally "
+       "reflected at the exit, and on the others (`-`: none). Stage times are the pass's GL "
+       "timer queries, over frames of their own after the timed frames (the timed frames run "
+       "without them: their queries make llvmpipe finish each stage before the next), stage k = vtkRefractionPass's TIMED_* enumerator k (";
+  for (int stage = 0; stage < vtkRefractionPass::TIMED_STAGE_COUNT; ++stage)
+  {
+    f << (stage ? ", " : "") << stage << " " << vtkRefractionPass::GetStageName(stage);
+  }
+  f << "); on llvmpipe they include work queued before "
+        "the stage; -1 marks a stage the method does not run. `B/px` is "
+        "vtkRefractionPass::GetTextureBytes() over the pixels.\n\n";
+  // Table 1 of the paper: fps per model at 512x512 (or the size nearest it).
+  std::map<std::string, std::map<std::string, const Row*>> table;
+  int tableSize = 0;
+  for (const Row& r : rows)
+  {
+    if (tableSize == 0 || std::abs(r.Size - 512) < std::abs(tableSize - 512))
+      tableSize = r.Size;
+  }
+  f << "## Table 1 analogue (" << tableSize << "x" << tableSize
+    << ", fps from the median CPU frame time; RT in seconds, 2 threads)\n\n"
+    << "| model | triangles | pixels | DIR | ISR | SIR | SSP | plain VTK | RT (two-interface) | "
+       "RT (full) | RT (full, SS) |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Row& r : rows)
+  {
+    if (r.Size != tableSize || r.Config.Method == "none" || r.Config.NoScene)
+      continue;
+    if (r.Config.Method == "DIR" && (r.Config.Steps != 5 || r.Config.Bounds ||
+                                      r.Config.Adaptive || r.Config.Nearest || r.Config.Paper))
+      continue;
+    table[r.Mesh][r.Config.Method] = &r;
+  }
+  for (auto& entry : table)
+  {
+    auto fps = [&](const char* m) {
+      auto it = entry.second.find(m);
+      return it == entry.second.end()
+        ? std::string("-")
+        : std::to_string(static_cast<int>(1000.0 / it->second->CpuMs.Median + 0.5));
+    };
+    const Row* any = entry.second.begin()->second;
+    std::snprintf(line, sizeof(line),
+      "| %s | %lld | %ld | %s | %s | %s | %s | %d | %.2f s | %.2f s | %.2f s |\n",
+      entry.first.c_str(), static_cast<long long>(any->Triangles), any->Pixels,
+      fps("DIR").c_str(), fps("ISR").c_str(), fps("SIR").c_str(), fps("SSP").c_str(),
+      static_cast<int>(1000.0 / any->PlainCpuMs.Median + 0.5), any->RefTwoMs / 1000.0,
+      any->RefFullMs / 1000.0, any->RefFullSSMs / 1000.0);
+    f << line;
+  }
+  f << "\n## All rows\n\n| mesh | size | method | ms [min-max] | ratio [min-max] | stage ms | "
+       "pre ms | B/px | PSNR two | PSNR full | PSNR full SS | model vs full SS | SSIM full SS | TIR / "
+       "rest (full SS) | TIR / rest (two) | T2 deg mean/p95 | TIR px |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Row& r : rows)
+  {
+    std::string stages;
+    for (size_t s = 0; s < r.StageMs.size(); ++s)
+    {
+      char stage[32];
+      std::snprintf(stage, sizeof(stage), "%s%.2f", s ? "/" : "", r.StageMs[s]);
+      stages += stage;
+    }
+    std::snprintf(line, sizeof(line),
+      "| %s | %d | %s | %.2f [%.2f-%.2f] | %.2f [%.2f-%.2f] | %s | %.1f | %.0f | %s | %s | %s | "
+      "%s | %.3f | %s / %s | %s / %s | %.2f/%.2f | %ld |\n",
+      r.Mesh.c_str(), r.Size, r.Config.Label().c_str(), r.CpuMs.Median, r.CpuMs.Min,
+      r.CpuMs.Max, r.Ratio.Median, r.Ratio.Min, r.Ratio.Max, stages.c_str(), r.PrecomputeMs,
+      r.BytesPerPixel, Db(r.Two.Psnr).c_str(), Db(r.Full.Psnr).c_str(),
+      Db(r.FullSS.Psnr).c_str(), Db(r.PsnrModelFullSS).c_str(), r.FullSS.Ssim,
+      Db(r.FullSS.PsnrTir).c_str(), Db(r.FullSS.PsnrRest).c_str(), Db(r.Two.PsnrTir).c_str(),
+      Db(r.Two.PsnrRest).c_str(), r.AngMean, r.AngP95, r.TirPixels);
+    f << line;
+  }
+  // The noise that remains: the same plain render timed in every job of a mesh and size.
+  f << "\n## Noise\n\nThe plain render does the same work in every job of a mesh and size, so "
+       "its spread over the run is the machine's noise; a glass row's ratio spread over its "
+       "repeats is what a single ratio may be off by.\n\n"
+       "| mesh | size | plain ms median [min-max] over rows | widest ratio spread (max/min) |\n"
+       "|---|---|---|---|\n";
+  std::map<std::pair<std::string, int>, std::vector<const Row*>> groups;
+  for (const Row& r : rows)
+    groups[{ r.Mesh, r.Size }].push_back(&r);
+  for (const auto& g : groups)
+  {
+    std::vector<double> plain;
+    double lo = 1e300, hi = 0, widest = 1.0;
+    for (const Row* r : g.second)
+    {
+      plain.push_back(r->PlainCpuMs.Median);
+      lo = std::min(lo, r->PlainCpuMs.Min);
+      hi = std::max(hi, r->PlainCpuMs.Max);
+      if (r->Ratio.Min > 0)
+        widest = std::max(widest, r->Ratio.Max / r->Ratio.Min);
+    }
+    std::snprintf(line, sizeof(line), "| %s | %d | %.2f [%.2f-%.2f] | %.2f |\n",
+      g.first.first.c_str(), g.first.second, Median(plain), lo, hi, widest);
+    f << line;
+  }
+  f.flush();
+  return static_cast<bool>(f);
+}
+
+bool WritePareto(vtkRenderWindow* window, const std::string& path, const std::vector<Row>& rows)
+{
+  std::vector<std::string> meshes;
+  int plotSize = 0;
+  for (const Row& r : rows)
+  {
+    if (std::find(meshes.begin(), meshes.end(), r.Mesh) == meshes.end())
+      meshes.push_back(r.Mesh);
+    if (plotSize == 0 || std::abs(r.Size - 512) < std::abs(plotSize - 512))
+      plotSize = r.Size;
+  }
+  if (meshes.empty())
+    return true; // nothing to plot
+  vtkNew<vtkContextView> view;
+  while (window->GetRenderers()->GetFirstRenderer())
+  {
+    window->RemoveRenderer(window->GetRenderers()->GetFirstRenderer());
+  }
+  view->SetRenderWindow(window);
+  window->SetSize(1200, 900);
+  const int columns = meshes.size() > 1 ? 2 : 1;
+  const int rowsCount = static_cast<int>((meshes.size() + columns - 1) / columns);
+  vtkNew<vtkChartMatrix> matrix;
+  view->GetScene()->AddItem(matrix);
+  matrix->SetSize(vtkVector2i(columns, rowsCount));
+  const char* families[] = { "SIR", "DIR reduction", "DIR bbox", "DIR adaptive", "ISR", "SSP",
+    "DIR paper (no secant)", "DIR nearest back", "PEEL", "SH" };
+  const unsigned char colours[][3] = { { 120, 120, 120 }, { 31, 119, 180 }, { 255, 127, 14 },
+    { 44, 160, 44 }, { 214, 39, 40 }, { 148, 103, 189 }, { 140, 86, 75 }, { 23, 190, 207 },
+    { 227, 119, 194 }, { 188, 189, 34 } };
+  for (size_t m = 0; m < meshes.size(); ++m)
+  {
+    vtkChart* chart = matrix->GetChart(vtkVector2i(static_cast<int>(m % columns),
+      rowsCount - 1 - static_cast<int>(m / columns)));
+    chart->SetTitle(meshes[m] + " " + std::to_string(plotSize) + "x" + std::to_string(plotSize));
+    chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("frame time / plain VTK (median of repeats)");
+    chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE against the supersampled full reference");
+    chart->SetShowLegend(m == 0);
+    double largest[2] = { 0.0, 0.0 }; // x, y over every plotted point
+    for (int family = 0; family < 10; ++family)
+    {
+      vtkNew<vtkTable> table;
+      vtkNew<vtkFloatArray> x;
+      vtkNew<vtkFloatArray> y;
+      x->SetName("ratio");
+      y->SetName(families[family]);
+      table->AddColumn(x);
+      table->AddColumn(y);
+      std::vector<std::pair<double, double>> points;
+      for (const Row& r : rows)
+      {
+        if (r.Mesh != meshes[m] || r.Size != plotSize || r.Config.Method == "none" ||
+          r.Config.NoScene)
+          continue;
+        const std::string& method = r.Config.Method;
+        const int f = method == "SH" ? 9
+          : method == "PEEL" ? 8
+          : method == "SIR" ? 0
+          : method == "ISR" ? 4
+          : method == "SSP" ? 5
+          : r.Config.Paper ? 6 : r.Config.Nearest ? 7 : r.Config.Adaptive ? 3 : r.Config.Bounds ? 2 : 1;
+        if (f == family)
+          points.emplace_back(r.Ratio.Median, r.FullSS.Rmse);
+      }
+      if (points.empty())
+        continue;
+      std::sort(points.begin(), points.end());
+      table->SetNumberOfRows(static_cast<vtkIdType>(points.size()));
+      for (size_t i = 0; i < points.size(); ++i)
+      {
+        table->SetValue(static_cast<vtkIdType>(i), 0, points[i].first);
+        table->SetValue(static_cast<vtkIdType>(i), 1, points[i].second);
+      }
+      vtkPlot* plot = chart->AddPlot(points.size() > 1 ? vtkChart::LINE : vtkChart::POINTS);
+      plot->SetInputData(table, 0, 1);
+      plot->SetColor(colours[family][0], colours[family][1], colours[family][2], 255);
+      plot->SetWidth(2.0);
+      for (const auto& point : points)
+      {
+        largest[0] = std::max(largest[0], point.first);
+        largest[1] = std::max(largest[1], point.second);
+      }
+    }
+    // From zero with a margin, so that a point is never drawn on the frame (VTK's automatic
+    // range puts the extreme points on it).
+    for (int a = 0; a < 2; ++a)
+    {
+      vtkAxis* axis = chart->GetAxis(a == 0 ? vtkAxis::BOTTOM : vtkAxis::LEFT);
+      axis->SetBehavior(vtkAxis::FIXED);
+      axis->SetRange(0.0, largest[a] > 0.0 ? 1.1 * largest[a] : 1.0);
+    }
+  }
+  view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  return writer->GetErrorCode() == 0;
+}
+}

@@ -1,0 +1,26 @@
+// The report a person reads: results.md (the paper's Table 1 analogue, every row, the noise)
+// and pareto.png (error against frame time per mesh, drawn with VTK's charts).
+#ifndef rfBenchReport_h
+#define rfBenchReport_h
+
+#include "rfBenchRow.h"
+
+#include <string>
+#include <vector>
+
+class vtkRenderWindow;
+
+namespace rfbench
+{
+// A PSNR in dB with one decimal, or "-" where there is none (negative).
+std::string Db(double v);
+
+// Writes results.md; `run` describes the run (environment, repeats, load).
+bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
+  const std::string& renderer, const std::string& windowPath, const std::string& run);
+
+// Draws pareto.png in the window (its renderers are taken out).
+bool WritePareto(vtkRenderWindow* window, const std::string& path, const std::vector<Row>& rows);
+}
+
+#endif

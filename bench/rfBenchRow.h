@@ -1,0 +1,48 @@
+// One row of the results: a setting on a mesh at a size, with its times over the repeats and
+// its errors against the references; what results.csv and results.md are made of.
+#ifndef rfBenchRow_h
+#define rfBenchRow_h
+
+#include "rfBenchSettings.h"
+
+#include <vtkType.h>
+
+#include <string>
+#include <vector>
+
+namespace rfbench
+{
+// Error of one picture against one reference, on glass pixels, split by TIR.
+struct Errors
+{
+  double Psnr = -1, Rmse = -1, Ssim = -1, PsnrTir = -1, PsnrRest = -1;
+};
+
+// Medians and extremes over the repeats of one row.
+struct Spread
+{
+  double Median = -1, Min = -1, Max = -1;
+};
+
+struct Row
+{
+  std::string Mesh;
+  vtkIdType Triangles = 0;
+  int Size = 0;
+  Setting Config;
+  int Repeats = 0;
+  Spread CpuMs, PlainCpuMs, Ratio;
+  double GpuFrameMs = -1, PlainGpuMs = -1;
+  std::vector<double> StageMs; // medians, one per vtkRefractionPass timed stage
+  double PrecomputeMs = 0, RefTwoMs = 0, RefFullMs = 0, RefFullSSMs = 0, BytesPerPixel = 0;
+  Errors Two, Full, TwoSS, FullSS;
+  // The two-interface model's own error: its supersampled reference against the supersampled
+  // full one, on the row's glass pixels (the floor a method of that model can reach).
+  double PsnrModelFullSS = -1;
+  double AngMean = 0, AngP95 = 0, AngMax = 0, P2Mean = 0, P2Max = 0, TirShare = 0,
+         RefTirShare = 0;
+  long Pixels = 0, TirPixels = 0;
+};
+}
+
+#endif

@@ -1,0 +1,32 @@
+// Frame times: the medians of timed frames of one window (CPU, GPU and the pass's stages),
+// and the statistics of the repeats.
+#ifndef rfBenchTiming_h
+#define rfBenchTiming_h
+
+#include "rfBenchRow.h"
+
+#include <vector>
+
+class vtkRefractionPass;
+class vtkRenderWindow;
+
+namespace rfbench
+{
+// The median of v, -1 when empty.
+double Median(std::vector<double> v);
+
+// Median, min and max of v (-1 each when empty).
+Spread SpreadOf(const std::vector<double>& v);
+
+struct Timing
+{
+  double Cpu = -1, GpuFrame = -1;
+  std::vector<double> Stages; // vtkRefractionPass's timed stages, 0..TIMED_STAGE_COUNT-1
+};
+
+// Renders `frames` timed frames after 5 warm-up frames; `pass` (or nullptr for a plain
+// render) also gives its stage times.
+Timing TimeFrames(vtkRenderWindow* window, vtkRefractionPass* pass, int frames);
+}
+
+#endif

@@ -66,6 +66,9 @@ std::vector<Column> Columns(int stageCount)
   c.push_back({ "anti_aliasing",
     [](const Row& r) { return std::string(r.Config.AntiAliasing ? "1" : "0"); },
     [](Row& r, const std::string& v) { r.Config.AntiAliasing = v == "1"; } });
+  c.push_back({ "multisample_silhouette",
+    [](const Row& r) { return std::string(r.Config.PixelComposite ? "0" : "1"); },
+    [](Row& r, const std::string& v) { r.Config.PixelComposite = v == "0"; } });
   c.push_back({ "repeats", [](const Row& r) { return std::to_string(r.Repeats); },
     [](Row& r, const std::string& v) { r.Repeats = std::atoi(v.c_str()); } });
   number("cpu_ms", [](Row& r) -> double& { return r.CpuMs.Median; });

@@ -18,6 +18,7 @@ struct Options
   int Repeats = 3;
   int Seed = 1;
   int Supersample = 4;
+  int MultiSamples = 0; // the window's (--multisamples)
   bool Smoke = false;
   bool Quick = false;
   bool X11 = false;

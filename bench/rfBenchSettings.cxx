@@ -25,6 +25,14 @@ std::vector<Setting> PresetSettings(const Options& o)
   {
     settings.push_back({ "DIR", 5 });
     settings.push_back(antiAliased);
+    if (o.MultiSamples > 0)
+    {
+      for (Setting pixelwise : { Setting{ "DIR", 5 }, antiAliased })
+      {
+        pixelwise.PixelComposite = true;
+        settings.push_back(pixelwise);
+      }
+    }
     settings.push_back(bounces);
     settings.push_back({ "SIR", 0 });
     for (int layers : { 2, 4, 8 })
@@ -114,6 +122,7 @@ void Apply(vtkRefractionPass* pass, const Setting& setting)
   pass->SetSecantRefinement(!setting.Paper);
   pass->SetSceneRefraction(!setting.NoScene);
   pass->SetAntiAliasing(setting.AntiAliasing);
+  pass->SetMultiSampleSilhouette(!setting.PixelComposite);
   pass->SetTIRBounces(setting.Bounces);
   pass->SetPeelLayers(std::max(setting.Layers, 2));
 }

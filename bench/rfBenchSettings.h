@@ -23,6 +23,7 @@ struct Setting
   bool Paper = false; // the paper's search exactly: no secant refinement
   bool NoScene = false; // SetSceneRefraction(false): the opaque scene is not refracted (NG off)
   bool AntiAliasing = false; // SetAntiAliasing(true): four rays per pixel
+  bool PixelComposite = false; // SetMultiSampleSilhouette(false): composited pixel by pixel
   int Bounces = 0;           // SetTIRBounces: total internal reflections followed
   int Layers = 0;            // PEEL: SetPeelLayers (K)
   std::string Label() const
@@ -38,7 +39,8 @@ struct Setting
       s << (Adaptive ? " adaptive<=" : " ") << Steps << (Bounds ? " bbox" : "")
         << (Nearest ? " nearest" : "") << (Paper ? " paper" : "");
     }
-    s << (NoScene ? " NG off" : "") << (AntiAliasing ? " AA" : "");
+    s << (NoScene ? " NG off" : "") << (AntiAliasing ? " AA" : "")
+      << (PixelComposite ? " px" : "");
     if (Bounces > 0)
     {
       s << " TIR " << Bounces;

@@ -45,7 +45,8 @@ public:
     STAGE_FRONT = 1,
     STAGE_BACK = 2,
     STAGE_MASK = 3,
-    STAGE_PEEL = 4
+    STAGE_PEEL = 4,
+    STAGE_COMPOSITE = 5
   };
 
   /**
@@ -68,6 +69,17 @@ public:
   void DrawPeel(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layer);
   /// SSP's refraction mask into the alpha of the framebuffer bound now.
   void DrawMask(vtkOpenGLRenderer* ren);
+  /// The glass props into the framebuffer bound now (the renderer's viewport) for `stage`,
+  /// with the GL state the caller set.
+  void DrawOnScreen(vtkOpenGLRenderer* ren, int stage);
+  /// STAGE_COMPOSITE's inputs: the texture units of FRONT_SURFACE and GLASS_COLOR, and
+  /// whether GLASS_COLOR holds the pixels' corners (anti-aliasing).
+  void SetCompositeInputs(int surfaceUnit, int colourUnit, bool corners)
+  {
+    this->CompositeInputs[0] = surfaceUnit;
+    this->CompositeInputs[1] = colourUnit;
+    this->CompositeInputs[2] = corners ? 1 : 0;
+  }
 
   /// Props drawn by the last draw.
   int GetNumberOfDrawnProps() const { return this->NumberOfRenderedProps; }
@@ -134,6 +146,7 @@ private:
   bool Parallel = false;
   vtkNew<vtkMatrix4x4> InverseProjection;
   int Stage = STAGE_NONE;
+  int CompositeInputs[3] = { 0, 0, 0 };
   int Width = 0;
   int Height = 0;
   int Origin[2] = { 0, 0 };

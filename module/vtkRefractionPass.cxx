@@ -27,6 +27,7 @@
 #include "vtkRefractionMaterials.h"
 #include "vtkRefractionMethod.h"
 #include "vtkRefractionOpaqueStep.h"
+#include "vtkRefractionSampleComposite.h"
 #include "vtkRefractionSHTransfer.h"
 #include "vtkRefractionShadeStage.h"
 #include "vtkRefractionTargets.h"
@@ -119,6 +120,7 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TIRPolicy: " << (this->TIRPolicy == TIR_CLAMP ? "clamp" : "reflect") << "\n";
   os << indent << "Fresnel: " << this->Fresnel << "\n";
   os << indent << "AntiAliasing: " << this->AntiAliasing << "\n";
+  os << indent << "MultiSampleSilhouette: " << this->MultiSampleSilhouette << "\n";
   os << indent << "TIRBounces: " << this->TIRBounces << "\n";
   os << indent << "PeelLayers: " << this->PeelLayers << "\n";
   os << indent << "SHSmoothing: " << this->SHSmoothing << "\n";
@@ -538,6 +540,10 @@ void vtkRefractionPass::RenderGlass(
     ren->GetBackground(frame.Background2);
   }
   frame.SceneRefraction = sceneRefraction;
+  // The framebuffer the scene is drawn into (bound now): multisampled, the glass goes in at
+  // its samples.
+  frame.SampleComposite = this->MultiSampleSilhouette &&
+    vtkRefractionSampleComposite::GetDrawFramebufferSamples() > 1;
   frame.AbsorptionDistance = this->Materials->GetAbsorptionDistance();
   frame.GlassDiagonal = this->Materials->GetLargestDiagonal();
   frame.GlassExtent = this->Materials->GetExtentDiagonal();
@@ -637,6 +643,10 @@ void vtkRefractionPass::RenderGlass(
 
   this->StartTimer(TIMED_SHADE);
   this->ShadeStage->Render(ren, method, this, this->Targets, frame, materialIOR, materialSheet);
+  if (frame.SampleComposite)
+  {
+    this->SampleComposite->Render(ren, this->GeometryStage, this->Targets, this->AntiAliasing);
+  }
   this->StopTimer(TIMED_SHADE);
   if (this->DebugOutput && this->ShadeStage->Prepare(ren, method, this, frame, true))
   {

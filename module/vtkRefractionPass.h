@@ -54,6 +54,7 @@ class vtkRefractionLights;
 class vtkRefractionMaterials;
 class vtkRefractionMethod;
 class vtkRefractionOpaqueStep;
+class vtkRefractionSampleComposite;
 class vtkRefractionShadeStage;
 class vtkRefractionTargets;
 class vtkTexture;
@@ -369,6 +370,24 @@ public:
 
   ///@{
   /**
+   * The glass's silhouette at the window's samples (on by default). VTK's default window is
+   * multisampled, and the opaque actors' edges are resolved from its samples; the glass is
+   * shaded once per pixel, so put into the scene pixel by pixel its silhouette would be
+   * stair-stepped beside them. With this on, in a multisampled framebuffer the glass's front
+   * surface is drawn once more, through the mappers, with the colour its pixels were shaded
+   * (vtkRefractionSampleComposite): the window's samples cover the glass exactly as they would
+   * cover an opaque actor of the same mesh, so its silhouette, and its edges against opaque
+   * actors, are as smooth as VTK's own. Costs one more draw of the glass's front faces (in a
+   * single-sampled framebuffer nothing: the pass composites pixel by pixel there). Works with
+   * AntiAliasing too, which smooths the inside of the glass.
+   */
+  vtkSetMacro(MultiSampleSilhouette, bool);
+  vtkGetMacro(MultiSampleSilhouette, bool);
+  vtkBooleanMacro(MultiSampleSilhouette, bool);
+  ///@}
+
+  ///@{
+  /**
    * Debug output: when on, every render also writes, per pixel of the glass, the exit point
    * P2 (view space), the exit direction T2 (view space) and the thickness |P2 - P1| into
    * GetDebugImage(): point arrays "P2" (3), "T2" (3), "Thickness" (1) and "Flags" (1: 0 no
@@ -444,6 +463,7 @@ protected:
   double SHSmoothing = 5.0;
   bool Fresnel = true;
   bool AntiAliasing = false;
+  bool MultiSampleSilhouette = true;
   bool DebugOutput = false;
   bool AdaptiveSearch = false;
   bool SecantRefinement = true;
@@ -467,6 +487,7 @@ protected:
   vtkNew<vtkRefractionDepthRange> DepthRange;
   vtkNew<vtkRefractionLayerPack> LayerPack;
   vtkNew<vtkRefractionShadeStage> ShadeStage;
+  vtkNew<vtkRefractionSampleComposite> SampleComposite;
   vtkNew<vtkRefractionMaterials> Materials;
   vtkNew<vtkRefractionLights> Lights;
   vtkSmartPointer<vtkRefractionMethod> MethodObject;

@@ -354,7 +354,10 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
   fbo->RemoveDepthAttachment();
   fbo->UnBind();
   fbo->RestorePreviousBindingsAndBuffers();
-  this->Composite(ren, targets, corners);
+  if (!frame.SampleComposite)
+  {
+    this->Composite(ren, targets, corners);
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -55,6 +55,7 @@ public:
     vtkTexture* EnvironmentCube = nullptr;    // the renderer's cube map, or nullptr
     bool EnvironmentBackground = false;       // the renderer's background (no cube map)
     bool SceneRefraction = false;             // the captured scene is followed
+    bool SampleComposite = false;             // the caller composites (at the samples)
     double AbsorptionDistance = 0.0;          // > 0: the data's colour tints the glass
     const std::vector<float>* RedIndex = nullptr;  // dispersion: red indices per material
     const std::vector<float>* BlueIndex = nullptr; // and blue ones (nullptr: no dispersion)
@@ -71,7 +72,8 @@ public:
   bool Prepare(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, vtkRefractionPass* settings,
     const Frame& frame, bool debug);
 
-  /// Shades the glass and puts it into the framebuffer bound now (the renderer's viewport).
+  /// Shades the glass and puts it into the framebuffer bound now (the renderer's viewport),
+  /// unless frame.SampleComposite (vtkRefractionSampleComposite puts it there).
   void Render(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, vtkRefractionPass* settings,
     vtkRefractionTargets* targets, const Frame& frame, const std::vector<float>& materialIOR, const std::vector<float>& materialSheet);
 

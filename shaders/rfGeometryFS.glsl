@@ -3,7 +3,7 @@
 // before the RF::Impl marker after VTK's Output::Dec tag, the part after it after VTK's
 // Coincident::Impl tag (the end of main). Nothing else runs per fragment: VTK's lighting is
 // left out (the refraction replaces the colour) and the refraction itself runs once per pixel
-// in the shading stage (rfShadeFS.glsl). One program serves the three stages (rfGeometryStage
+// in the shading stage (rfShadeFS.glsl). One program serves every stage (rfGeometryStage
 // selects), so switching stages costs no shader rebuild.
 //  1 front: octahedral view-space normal facing the viewer, -z_view, material index + 1 (a
 //    cleared texel, 0, is no glass); with RF_GBUFFER_COLOUR (output 1) the data's
@@ -24,6 +24,11 @@
 //    outward side faces the viewer (rfOutwardFront: whether that is the GL front face).
 //  3 mask: SSP's refraction mask (Sousa, GPU Gems 2 ch. 19, listing 19-2), blended into the
 //    framebuffer's alpha.
+//  5 composite at the window's samples (vtkRefractionSampleComposite): the front surface
+//    drawn again into a multisampled framebuffer, with the colour the shading stage gave the
+//    fragment's pixel, so that the window's samples cover the glass's silhouette as they
+//    cover an opaque actor's (the full-screen composite, rfCompositeFS.glsl, covers whole
+//    pixels). Nothing of the G-buffer is computed.
 // Defined by the stage: RF_POSITION_VC and RF_NORMAL_VC (the mapper's view-space position and
 // normal, or what stands in for them).
 uniform int rfGeometryStage;
@@ -54,7 +59,69 @@ uniform int rfHaveNormalDistance;
 uniform float rfModelScale;
 #endif
 
+// STAGE 5: FRONT_SURFACE (for the material at each pixel) and GLASS_COLOR (the shaded glass,
+// at the pixels or, rfCompositeCorners, at their lower-left corners as rfShadeFS.glsl writes
+// it with RF_CORNER_SAMPLES).
+uniform sampler2D rfCompositeSurface;
+uniform sampler2D rfCompositeColour;
+uniform int rfCompositeCorners;
+
 //RF::Common
+
+// The shaded glass at pixel p: its colour, or with corners the mean of those of its four
+// corners that lie on the glass; alpha 0 where it has none.
+vec4 rfCompositeAt(ivec2 p, ivec2 last)
+{
+  if (rfCompositeCorners == 0)
+  {
+    return vec4(texelFetch(rfCompositeColour, p, 0).rgb, 1.0);
+  }
+  vec4 sum = texelFetch(rfCompositeColour, p, 0) +
+    texelFetch(rfCompositeColour, min(p + ivec2(1, 0), last), 0) +
+    texelFetch(rfCompositeColour, min(p + ivec2(0, 1), last), 0) +
+    texelFetch(rfCompositeColour, min(p + ivec2(1, 1), last), 0);
+  return sum.a > 0.5 ? vec4(sum.rgb / sum.a, 1.0) : vec4(0.0);
+}
+
+// The colour of a fragment of the glass of this material: its pixel's where the pixel was
+// shaded as this material (every pixel inside the silhouette: exactly the full-screen
+// composite's colour); at the silhouette, where the fragment covers samples of a pixel whose
+// centre lies off this glass, the mean of the neighbours of this material (else of any
+// glass). Alpha 0: none near (a sliver between pixel centres), the fragment is dropped.
+vec4 rfSampleComposite(float material)
+{
+  ivec2 last = ivec2(rfViewport.zw) - 1;
+  ivec2 pixel = clamp(ivec2(gl_FragCoord.xy - rfViewport.xy), ivec2(0), last);
+  if (abs(texelFetch(rfCompositeSurface, pixel, 0).w - material) < 0.5)
+  {
+    vec4 colour = rfCompositeAt(pixel, last);
+    if (colour.a > 0.5)
+    {
+      return colour;
+    }
+  }
+  vec4 same = vec4(0.0);
+  vec4 other = vec4(0.0);
+  for (int k = 0; k < 9; ++k)
+  {
+    ivec2 q = clamp(pixel + ivec2(k % 3 - 1, k / 3 - 1), ivec2(0), last);
+    float w = texelFetch(rfCompositeSurface, q, 0).w;
+    if (w > 0.5)
+    {
+      vec4 colour = rfCompositeAt(q, last);
+      if (abs(w - material) < 0.5)
+      {
+        same += colour;
+      }
+      else
+      {
+        other += colour;
+      }
+    }
+  }
+  vec4 sum = same.a > 0.5 ? same : other;
+  return sum.a > 0.5 ? vec4(sum.rgb / sum.a, 1.0) : vec4(0.0);
+}
 
 // The unit shading normal; where it is unusable the face normal from the position's
 // derivatives, else the direction toward the eye. Unusable: zero, tiny or not finite (VTK has
@@ -93,6 +160,16 @@ vec3 rfReconstructPositionVC()
 }
 
 //RF::Impl
+  if (rfGeometryStage == 5)
+  {
+    vec4 rfComposite = rfSampleComposite(RF_FRAGMENT_MATERIAL);
+    if (!(rfComposite.a > 0.5))
+    {
+      discard;
+    }
+    gl_FragData[0] = rfComposite;
+  }
+  else
   {
     vec4 rfDataColour = gl_FragData[0]; // RF_DATA_COLOUR, as VTK's colour code left it
     vec3 rfP = RF_POSITION_VC;

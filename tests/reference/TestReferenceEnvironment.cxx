@@ -107,9 +107,22 @@ Difference Compare(const std::vector<float>& pass, vtkImageData* reference)
   vtkDataArray* colour = reference->GetPointData()->GetArray("Colour");
   vtkDataArray* hit = reference->GetPointData()->GetArray("Hit");
   Difference d;
+  // The glass pixels whose eight neighbours are glass too: in a multisampled window (VTK's
+  // default) the silhouette's pixels blend the glass with the background, as VTK's own edges
+  // do, where the reference's pixel centre sees glass alone (max 0.257 there, measured).
+  auto isHit = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < Size && y < Size && hit->GetComponent(y * Size + x, 0) > 0.5;
+  };
   for (vtkIdType i = 0; i < hit->GetNumberOfTuples(); ++i)
   {
-    if (hit->GetComponent(i, 0) < 0.5)
+    const int x = static_cast<int>(i % Size);
+    const int y = static_cast<int>(i / Size);
+    bool inside = true;
+    for (int k = 0; k < 9; ++k)
+    {
+      inside = inside && isHit(x + k % 3 - 1, y + k / 3 - 1);
+    }
+    if (!inside)
     {
       continue;
     }
@@ -193,7 +206,8 @@ int main()
     RF_REQUIRE(description.find("cube map") == 0, "not traced as a cube map: %s",
       description.c_str());
     // 8-bit output (half a step: 0.002) plus llvmpipe's filtering; measured on llvmpipe:
-    // mean 0.0010, max 0.0021 for both layouts (a flipped face or a wrong frame: 0.3 mean).
+    // mean 0.0010, max 0.0021 for both layouts (0.0023 inside the silhouette, multisampled; a
+    // flipped face or a wrong frame: 0.3 mean).
     RF_REQUIRE(framed.Mean < 0.004 && framed.Max < 0.01, "%s: the reference does not sample "
       "the environment as the pass does", names[e]);
     RF_REQUIRE(unframed.Mean > 10 * framed.Mean + 0.02, "%s: the frame makes no difference",

@@ -1,0 +1,53 @@
+#include "vtkRefractionSampleComposite.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOpenGLState.h"
+#include "vtkRefractionGeometryStage.h"
+#include "vtkRefractionTargets.h"
+#include "vtkTextureObject.h"
+
+#include "vtk_glew.h"
+
+vtkStandardNewMacro(vtkRefractionSampleComposite);
+
+//------------------------------------------------------------------------------
+int vtkRefractionSampleComposite::GetDrawFramebufferSamples()
+{
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  return samples;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionSampleComposite::Render(vtkOpenGLRenderer* ren,
+  vtkRefractionGeometryStage* geometry, vtkRefractionTargets* targets, bool corners)
+{
+  vtkTextureObject* surface = targets->Get(vtkRefractionTargets::FRONT_SURFACE);
+  vtkTextureObject* colour = targets->Get(vtkRefractionTargets::GLASS_COLOR);
+  if (!surface || !colour)
+  {
+    return;
+  }
+  vtkOpenGLState* ostate = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+  // As an opaque actor is drawn: the scene's depth test per sample, the glass's depth written
+  // per sample (what later passes and translucent actors test against), its colour replacing
+  // the scene's.
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  ostate->vtkglEnable(GL_DEPTH_TEST);
+  ostate->vtkglDepthFunc(GL_LEQUAL);
+  ostate->vtkglDepthMask(GL_TRUE);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglDisable(GL_BLEND);
+  surface->Activate();
+  colour->Activate();
+  geometry->SetCompositeInputs(surface->GetTextureUnit(), colour->GetTextureUnit(), corners);
+  geometry->DrawOnScreen(ren, vtkRefractionGeometryStage::STAGE_COMPOSITE);
+  colour->Deactivate();
+  surface->Deactivate();
+}

@@ -1,7 +1,6 @@
 #include "vtkRefractionGeometryStage.h"
 
 #include "vtkActor.h"
-#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -12,8 +11,9 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
+#include "vtkRefractionGlassKeys.h"
 #include "vtkRefractionMeshes.h"
-#include "vtkRefractionPass.h"
+#include "vtkRefractionModelMatrix.h"
 #include "vtkRefractionTargets.h"
 #include "vtkRenderState.h"
 #include "vtkShaderProgram.h"
@@ -23,7 +23,6 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
-#include <cmath>
 #include <sstream>
 #include <vector>
 
@@ -37,7 +36,7 @@ const char* const kImplTag = "//RF::Geometry::Impl";
 
 bool IsGlassMapper(vtkAbstractMapper* mapper, vtkProp* prop)
 {
-  return vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && vtkRefractionPass::IsGlass(prop);
+  return vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && vtkRefractionGlassKeys::IsGlass(prop);
 }
 }
 
@@ -480,22 +479,10 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
   this->CullHiddenFaces(prop);
   if (program->IsUniformUsed("rfHaveNormalDistance"))
   {
-    vtkActor* actor = vtkActor::SafeDownCast(prop);
     const bool have = this->HasNormalDistance(prop);
     program->SetUniformi("rfHaveNormalDistance", have ? 1 : 0);
     // d_N is measured in model coordinates: scale it with the actor.
-    double scale = 1.0;
-    if (actor)
-    {
-      vtkMatrix4x4* m = actor->GetMatrix();
-      double columns[3] = { 0.0, 0.0, 0.0 };
-      for (int c = 0; c < 3; ++c)
-      {
-        columns[c] = std::sqrt(m->GetElement(0, c) * m->GetElement(0, c) +
-          m->GetElement(1, c) * m->GetElement(1, c) + m->GetElement(2, c) * m->GetElement(2, c));
-      }
-      scale = std::cbrt(columns[0] * columns[1] * columns[2]);
-    }
+    const double scale = vtkRefractionModelMatrix::GetScale(prop);
     program->SetUniformf("rfModelScale", static_cast<float>(scale));
   }
   return true;
@@ -537,21 +524,7 @@ void vtkRefractionGeometryStage::CullHiddenFaces(vtkProp* prop)
 bool vtkRefractionGeometryStage::IsOutwardFront(vtkProp* prop)
 {
   // A mirroring actor matrix turns the winding seen on screen.
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  double mirror = 1.0;
-  if (actor)
-  {
-    double m[3][3];
-    vtkMatrix4x4* matrix = actor->GetMatrix();
-    for (int r = 0; r < 3; ++r)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        m[r][c] = matrix->GetElement(r, c);
-      }
-    }
-    mirror = vtkMath::Determinant3x3(m);
-  }
+  const double mirror = vtkRefractionModelMatrix::GetDeterminant(prop);
   return (this->SurfaceModel->GetProp(prop).WindingSign > 0) == (mirror >= 0.0);
 }
 
@@ -565,7 +538,7 @@ bool vtkRefractionGeometryStage::HasNormalDistance(vtkProp* prop)
   const std::vector<vtkRefractionMeshes::Block> blocks = vtkRefractionMeshes::GetBlocks(prop);
   for (const auto& block : blocks)
   {
-    if (!block.Mesh->GetPointData()->GetArray(vtkRefractionPass::GetISRDistanceArrayName()))
+    if (!block.Mesh->GetPointData()->GetArray(vtkRefractionGlassKeys::GetISRDistanceArrayName()))
     {
       return false;
     }
@@ -590,7 +563,7 @@ void vtkRefractionGeometryStage::MapNormalDistance(vtkProp* prop)
       return;
     }
   }
-  const char* name = vtkRefractionPass::GetISRDistanceArrayName();
+  const char* name = vtkRefractionGlassKeys::GetISRDistanceArrayName();
   if (vtkRefractionMeshes::IsComposite(prop))
   {
     vtkWarningMacro("ISR: glass actor " << actor

@@ -10,8 +10,8 @@
 #include "vtkProp.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
+#include "vtkRefractionGlassKeys.h"
 #include "vtkRefractionMeshes.h"
-#include "vtkRefractionPass.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 
@@ -53,7 +53,7 @@ void vtkRefractionGlassChecker::SplitProps(
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {
     vtkProp* prop = s->GetPropArray()[i];
-    if (!vtkRefractionPass::IsGlass(prop))
+    if (!vtkRefractionGlassKeys::IsGlass(prop))
     {
       if (others)
       {
@@ -82,7 +82,7 @@ void vtkRefractionGlassChecker::SplitProps(
     viewProps->InitTraversal(it);
     while (vtkProp* prop = viewProps->GetNextProp(it))
     {
-      if (prop->GetVisibility() && vtkRefractionPass::IsGlass(prop) &&
+      if (prop->GetVisibility() && vtkRefractionGlassKeys::IsGlass(prop) &&
         std::find(s->GetPropArray(), arrayEnd, prop) == arrayEnd)
       {
         this->CheckGlassProp(prop);
@@ -136,7 +136,7 @@ int vtkRefractionGlassChecker::CheckGlassProp(vtkProp* prop)
   // The verdict depends on the index and on the data only. Not on the prop's or its keys'
   // modification times: every render adds and removes the pass on the keys, and moving an
   // actor should not rescan its points.
-  const double ior = vtkRefractionPass::GetIndexOfRefraction(prop);
+  const double ior = vtkRefractionGlassKeys::GetIndexOfRefraction(prop);
   vtkDataObject* data = mapper ? mapper->GetInputDataObject(0, 0) : nullptr;
   vtkMTimeType time = data ? data->GetMTime() : 0;
   for (const auto& block : blocks)

@@ -14,8 +14,8 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
+#include "vtkRefractionGlassKeys.h"
 #include "vtkRefractionMeshes.h"
-#include "vtkRefractionPass.h"
 #include "vtkRefractionSurfaceModel.h"
 
 #include <algorithm>
@@ -174,19 +174,19 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
     {
       all.AddBounds(bounds);
     }
-    this->IOR.push_back(static_cast<float>(vtkRefractionPass::GetIndexOfRefraction(prop)));
+    this->IOR.push_back(static_cast<float>(vtkRefractionGlassKeys::GetIndexOfRefraction(prop)));
     double rgb[3];
-    this->Dispersion = vtkRefractionPass::GetDispersion(prop, rgb) || this->Dispersion;
+    this->Dispersion = vtkRefractionGlassKeys::GetDispersion(prop, rgb) || this->Dispersion;
     this->RedIOR.push_back(static_cast<float>(rgb[0]));
     this->BlueIOR.push_back(static_cast<float>(rgb[2]));
     vtkInformation* keys = prop->GetPropertyKeys();
-    const int model = keys && keys->Has(vtkRefractionPass::SURFACE_MODEL())
-      ? keys->Get(vtkRefractionPass::SURFACE_MODEL())
-      : vtkRefractionPass::SURFACE_AUTO;
+    const int model = keys && keys->Has(vtkRefractionGlassKeys::SURFACE_MODEL())
+      ? keys->Get(vtkRefractionGlassKeys::SURFACE_MODEL())
+      : vtkRefractionGlassKeys::SURFACE_AUTO;
     const vtkRefractionSurfaceModel::Prop surface = surfaces->GetProp(prop);
-    const bool sheet = model == vtkRefractionPass::SURFACE_THIN_SHEET ||
-      (model == vtkRefractionPass::SURFACE_AUTO && surface.Boundary);
-    if (model == vtkRefractionPass::SURFACE_AUTO &&
+    const bool sheet = model == vtkRefractionGlassKeys::SURFACE_THIN_SHEET ||
+      (model == vtkRefractionGlassKeys::SURFACE_AUTO && surface.Boundary);
+    if (model == vtkRefractionGlassKeys::SURFACE_AUTO &&
       ((surface.OpenBlocks > 0 && surface.OpenBlocks < surface.Blocks) ||
         (surface.MixedBlocks > 0 && !surface.PerPiece)))
     {
@@ -201,7 +201,7 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
       thickness = thinSheetThickness > 0.0 ? thinSheetThickness : 0.01 * diagonal;
       thickness = thickness > 0.0 ? thickness : 1e-3;
     }
-    if (model == vtkRefractionPass::SURFACE_AUTO && !sheet && surface.PerPiece)
+    if (model == vtkRefractionGlassKeys::SURFACE_AUTO && !sheet && surface.PerPiece)
     {
       // The sheet pieces of a mesh whose pieces disagree: a material of their own (the same
       // glass, a sheet as thick as theirs alone would be), chosen per fragment.
@@ -212,7 +212,7 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
       pieceThickness = pieceThickness > 0.0 ? pieceThickness : 1e-3;
       pieceSheets.emplace_back(this->IOR.size() - 1, pieceThickness);
     }
-    if (model == vtkRefractionPass::SURFACE_AUTO && (sheet || surface.PerPiece))
+    if (model == vtkRefractionGlassKeys::SURFACE_AUTO && (sheet || surface.PerPiece))
     {
       sheets.push_back(prop);
       sheetPieces.push_back(DescribeSheetPieces(prop, surfaces, false));

@@ -22,6 +22,7 @@
 #include "vtkRefractionDepthRange.h"
 #include "vtkRefractionGeometryStage.h"
 #include "vtkRefractionGlassChecker.h"
+#include "vtkRefractionGlassKeys.h"
 #include "vtkRefractionLayerPack.h"
 #include "vtkRefractionLights.h"
 #include "vtkRefractionMaterials.h"
@@ -41,25 +42,6 @@
 #include <algorithm>
 
 vtkStandardNewMacro(vtkRefractionPass);
-vtkInformationKeyMacro(vtkRefractionPass, GLASS, Integer);
-vtkInformationKeyMacro(vtkRefractionPass, INDEX_OF_REFRACTION, Double);
-vtkInformationKeyMacro(vtkRefractionPass, SURFACE_MODEL, Integer);
-vtkInformationKeyRestrictedMacro(vtkRefractionPass, DISPERSION, DoubleVector, 3);
-
-namespace
-{
-vtkInformation* GetOrCreateKeys(vtkProp* prop)
-{
-  vtkInformation* keys = prop->GetPropertyKeys();
-  if (!keys)
-  {
-    vtkNew<vtkInformation> created;
-    prop->SetPropertyKeys(created);
-    keys = created;
-  }
-  return keys;
-}
-}
 
 //------------------------------------------------------------------------------
 vtkRefractionPass::vtkRefractionPass() = default;
@@ -144,135 +126,86 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
+// The glass settings live on the prop's keys, written and read by vtkRefractionGlassKeys (which
+// the stages include instead of this class); the published API forwards there.
+static_assert(static_cast<int>(vtkRefractionPass::SURFACE_AUTO) ==
+      static_cast<int>(vtkRefractionGlassKeys::SURFACE_AUTO) &&
+    static_cast<int>(vtkRefractionPass::SURFACE_SOLID) ==
+      static_cast<int>(vtkRefractionGlassKeys::SURFACE_SOLID) &&
+    static_cast<int>(vtkRefractionPass::SURFACE_THIN_SHEET) ==
+      static_cast<int>(vtkRefractionGlassKeys::SURFACE_THIN_SHEET),
+  "vtkRefractionPass::SurfaceModelType and vtkRefractionGlassKeys::SurfaceModelType differ");
+static_assert(
+  vtkRefractionPass::DefaultGlassSpecular == vtkRefractionGlassKeys::DefaultGlassSpecular &&
+    vtkRefractionPass::DefaultGlassSpecularPower ==
+      vtkRefractionGlassKeys::DefaultGlassSpecularPower,
+  "vtkRefractionPass's and vtkRefractionGlassKeys's default glass specular terms differ");
+
+vtkInformationIntegerKey* vtkRefractionPass::GLASS()
+{
+  return vtkRefractionGlassKeys::GLASS();
+}
+
+vtkInformationDoubleKey* vtkRefractionPass::INDEX_OF_REFRACTION()
+{
+  return vtkRefractionGlassKeys::INDEX_OF_REFRACTION();
+}
+
+vtkInformationIntegerKey* vtkRefractionPass::SURFACE_MODEL()
+{
+  return vtkRefractionGlassKeys::SURFACE_MODEL();
+}
+
+vtkInformationDoubleVectorKey* vtkRefractionPass::DISPERSION()
+{
+  return vtkRefractionGlassKeys::DISPERSION();
+}
+
+const char* vtkRefractionPass::GetISRDistanceArrayName()
+{
+  return vtkRefractionGlassKeys::GetISRDistanceArrayName();
+}
+
 bool vtkRefractionPass::MakeGlass(vtkProp* prop, double indexOfRefraction)
 {
-  if (!prop)
-  {
-    vtkGenericWarningMacro("vtkRefractionPass::MakeGlass: no prop given.");
-    return false;
-  }
-  const rf_status status = rf_validate_ior(indexOfRefraction);
-  if (status != RF_OK)
-  {
-    vtkErrorWithObjectMacro(prop, "vtkRefractionPass::MakeGlass: index of refraction "
-        << indexOfRefraction << " rejected for " << prop->GetClassName() << " " << prop << ": "
-        << rf_status_message(status) << ". The prop is not marked as glass.");
-    return false;
-  }
-  vtkInformation* keys = GetOrCreateKeys(prop);
-  keys->Set(GLASS(), 1);
-  keys->Set(INDEX_OF_REFRACTION(), indexOfRefraction);
-  // Glass shows its shape by the highlights of the renderer's lights: an actor whose property
-  // still has VTK's default specular terms gets glass's (set Specular 0 after this for none).
-  vtkActor* actor = vtkActor::SafeDownCast(prop);
-  vtkProperty* property = actor ? actor->GetProperty() : nullptr;
-  if (property && property->GetSpecular() == 0.0 && property->GetSpecularPower() == 1.0)
-  {
-    property->SetSpecular(DefaultGlassSpecular);
-    property->SetSpecularPower(DefaultGlassSpecularPower);
-  }
-  prop->Modified();
-  return true;
+  return vtkRefractionGlassKeys::MakeGlass(prop, indexOfRefraction);
 }
 
-//------------------------------------------------------------------------------
 void vtkRefractionPass::SetSurfaceModel(vtkProp* prop, int model)
 {
-  if (!prop)
-  {
-    return;
-  }
-  vtkInformation* keys = GetOrCreateKeys(prop);
-  if (model == SURFACE_AUTO)
-  {
-    keys->Remove(SURFACE_MODEL());
-  }
-  else
-  {
-    keys->Set(SURFACE_MODEL(), model == SURFACE_THIN_SHEET ? SURFACE_THIN_SHEET : SURFACE_SOLID);
-  }
-  prop->Modified();
+  vtkRefractionGlassKeys::SetSurfaceModel(prop, model);
 }
 
-//------------------------------------------------------------------------------
 void vtkRefractionPass::ClearGlass(vtkProp* prop)
 {
-  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
-  if (keys)
-  {
-    keys->Remove(GLASS());
-    keys->Remove(INDEX_OF_REFRACTION());
-    keys->Remove(DISPERSION());
-    prop->Modified();
-  }
+  vtkRefractionGlassKeys::ClearGlass(prop);
 }
 
-//------------------------------------------------------------------------------
 bool vtkRefractionPass::SetDispersion(vtkProp* prop, double red, double green, double blue)
 {
-  if (!prop || !IsGlass(prop))
-  {
-    vtkGenericWarningMacro("vtkRefractionPass::SetDispersion: "
-      << (prop ? "the prop is not glass (MakeGlass first)" : "no prop given") << ".");
-    return false;
-  }
-  const double rgb[3] = { red, green, blue };
-  for (int c = 0; c < 3; ++c)
-  {
-    const rf_status status = rf_validate_ior(rgb[c]);
-    if (status != RF_OK)
-    {
-      vtkErrorWithObjectMacro(prop, "vtkRefractionPass::SetDispersion: "
-          << (c == 0 ? "red" : c == 1 ? "green" : "blue") << " index of refraction " << rgb[c]
-          << " rejected for " << prop->GetClassName() << " " << prop << ": "
-          << rf_status_message(status) << ". The prop's dispersion is unchanged.");
-      return false;
-    }
-  }
-  vtkInformation* keys = GetOrCreateKeys(prop);
-  keys->Set(DISPERSION(), rgb, 3);
-  keys->Set(INDEX_OF_REFRACTION(), green);
-  prop->Modified();
-  return true;
+  return vtkRefractionGlassKeys::SetDispersion(prop, red, green, blue);
 }
 
-//------------------------------------------------------------------------------
 void vtkRefractionPass::ClearDispersion(vtkProp* prop)
 {
-  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
-  if (keys && keys->Has(DISPERSION()))
-  {
-    keys->Remove(DISPERSION());
-    prop->Modified();
-  }
+  vtkRefractionGlassKeys::ClearDispersion(prop);
 }
 
-//------------------------------------------------------------------------------
 bool vtkRefractionPass::GetDispersion(vtkProp* prop, double rgb[3])
 {
-  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
-  if (keys && keys->Has(DISPERSION()) && keys->Length(DISPERSION()) == 3)
-  {
-    keys->Get(DISPERSION(), rgb);
-    return true;
-  }
-  rgb[0] = rgb[1] = rgb[2] = GetIndexOfRefraction(prop);
-  return false;
+  return vtkRefractionGlassKeys::GetDispersion(prop, rgb);
 }
 
-//------------------------------------------------------------------------------
 bool vtkRefractionPass::IsGlass(vtkProp* prop)
 {
-  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
-  return keys && keys->Has(GLASS()) && keys->Get(GLASS()) != 0;
+  return vtkRefractionGlassKeys::IsGlass(prop);
 }
 
-//------------------------------------------------------------------------------
 double vtkRefractionPass::GetIndexOfRefraction(vtkProp* prop)
 {
-  vtkInformation* keys = prop ? prop->GetPropertyKeys() : nullptr;
-  return keys && keys->Has(INDEX_OF_REFRACTION()) ? keys->Get(INDEX_OF_REFRACTION()) : 1.5;
+  return vtkRefractionGlassKeys::GetIndexOfRefraction(prop);
 }
+
 
 //------------------------------------------------------------------------------
 void vtkRefractionPass::SetSearchSteps(int steps)

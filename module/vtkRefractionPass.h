@@ -91,7 +91,7 @@ public:
     SH = 5
   };
   /// The point array ISR reads d_N from.
-  static const char* GetISRDistanceArrayName() { return "ISRNormalDistance"; }
+  static const char* GetISRDistanceArrayName();
   /// Where DIR's search range [Zmin, Zmax] comes from.
   enum DepthRangeType
   {

@@ -12,8 +12,8 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkRefractionGlassKeys.h"
 #include "vtkRefractionMeshes.h"
-#include "vtkRefractionPass.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -99,12 +99,12 @@ bool vtkRefractionSHTransfer::Check(const std::vector<vtkProp*>& glass, std::str
           << " is stale: its points changed after it was computed (the SH method is for "
              "static meshes)";
     }
-    else if (std::abs(settings->GetComponent(3, 0) - vtkRefractionPass::GetIndexOfRefraction(prop)) >
-      1e-6)
+    else if (std::abs(settings->GetComponent(3, 0) -
+               vtkRefractionGlassKeys::GetIndexOfRefraction(prop)) > 1e-6)
     {
       why << "the SH transfer of glass prop " << prop << " was computed for index of refraction "
           << settings->GetComponent(3, 0) << ", the prop has "
-          << vtkRefractionPass::GetIndexOfRefraction(prop);
+          << vtkRefractionGlassKeys::GetIndexOfRefraction(prop);
     }
     if (!why.str().empty())
     {

@@ -1,25 +1,14 @@
 #include "vtkRefractionPass.h"
 
-#include "vtkActor.h"
-#include "vtkCamera.h"
 #include "vtkImageData.h"
-#include "vtkInformation.h"
-#include "vtkInformationDoubleKey.h"
-#include "vtkInformationDoubleVectorKey.h"
-#include "vtkInformationIntegerKey.h"
-#include "vtkMath.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLCamera.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
-#include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
-#include "vtkOpenGLTexture.h"
-#include "vtkProperty.h"
 #include "vtkRefractionDepthRange.h"
+#include "vtkRefractionFrameBuilder.h"
 #include "vtkRefractionGeometryStage.h"
 #include "vtkRefractionGlassChecker.h"
 #include "vtkRefractionGlassKeys.h"
@@ -31,6 +20,7 @@
 #include "vtkRefractionSampleComposite.h"
 #include "vtkRefractionSHTransfer.h"
 #include "vtkRefractionShadeStage.h"
+#include "vtkRefractionStageTimers.h"
 #include "vtkRefractionTargets.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
@@ -39,12 +29,13 @@
 #include "rf_validate.h"
 #include "vtk_glew.h"
 
-#include <algorithm>
-
 vtkStandardNewMacro(vtkRefractionPass);
 
 //------------------------------------------------------------------------------
-vtkRefractionPass::vtkRefractionPass() = default;
+vtkRefractionPass::vtkRefractionPass()
+{
+  this->StageTimers->SetNumberOfStages(TIMED_STAGE_COUNT);
+}
 
 //------------------------------------------------------------------------------
 vtkRefractionPass::~vtkRefractionPass()
@@ -231,51 +222,13 @@ vtkImageData* vtkRefractionPass::GetDebugImage()
 }
 
 //------------------------------------------------------------------------------
-void vtkRefractionPass::StartTimer(int stage)
-{
-  if (!this->GPUTiming || !vtkOpenGLRenderTimer::IsSupported())
-  {
-    return;
-  }
-  auto& timer = this->Timers[stage];
-  if (!timer)
-  {
-    timer.reset(new vtkOpenGLRenderTimer);
-  }
-  if (timer->Ready())
-  {
-    this->StageMilliseconds[stage] = timer->GetElapsedMilliseconds();
-  }
-  if (!timer->Started() || timer->Ready())
-  {
-    timer->Reset();
-    timer->Start();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkRefractionPass::StopTimer(int stage)
-{
-  auto& timer = this->Timers[stage];
-  if (this->GPUTiming && timer && timer->Started() && !timer->Stopped())
-  {
-    timer->Stop();
-  }
-}
-
-//------------------------------------------------------------------------------
 double vtkRefractionPass::GetStageMilliseconds(int stage)
 {
   if (stage < 0 || stage >= TIMED_STAGE_COUNT)
   {
     return -1.0;
   }
-  auto& timer = this->Timers[stage];
-  if (timer && timer->Stopped() && timer->Ready())
-  {
-    this->StageMilliseconds[stage] = timer->GetElapsedMilliseconds();
-  }
-  return this->StageMilliseconds[stage];
+  return this->StageTimers->GetMilliseconds(stage);
 }
 
 //------------------------------------------------------------------------------
@@ -453,45 +406,9 @@ void vtkRefractionPass::RenderGlass(
   wanted[vtkRefractionTargets::DEBUG_0] = this->DebugOutput;
   wanted[vtkRefractionTargets::DEBUG_1] = this->DebugOutput;
   this->Targets->Update(renWin, this->Width, this->Height, wanted, reduction);
-  this->UpdateCamera(ren);
-  vtkTexture* cube = this->GetCubeEnvironment(ren);
-  vtkRefractionShadeStage::Frame frame;
-  frame.Projection = this->ProjectionGL;
-  frame.InverseProjection = this->InverseProjectionGL;
-  frame.ViewToWorld = this->ViewToWorld;
-  frame.EnvironmentMatrix = this->EnvironmentMatrix;
-  frame.Parallel = this->Parallel;
-  frame.EnvironmentCube = cube;
-  frame.EnvironmentBackground = this->EnvironmentMode == ENVIRONMENT_RENDERER && !cube;
-  ren->GetBackground(frame.Background);
-  if (ren->GetGradientBackground())
-  {
-    ren->GetBackground2(frame.Background2);
-  }
-  else
-  {
-    ren->GetBackground(frame.Background2);
-  }
-  frame.SceneRefraction = sceneRefraction;
-  // The framebuffer the scene is drawn into (bound now): multisampled, the glass goes in at
-  // its samples.
-  frame.SampleComposite = this->MultiSampleSilhouette &&
-    vtkRefractionSampleComposite::GetDrawFramebufferSamples() > 1;
-  frame.AbsorptionDistance = this->Materials->GetAbsorptionDistance();
-  frame.GlassDiagonal = this->Materials->GetLargestDiagonal();
-  frame.GlassExtent = this->Materials->GetExtentDiagonal();
-  if (this->Materials->GetDispersion())
-  {
-    frame.RedIndex = &this->Materials->GetRedIndex();
-    frame.BlueIndex = &this->Materials->GetBlueIndex();
-  }
-  frame.BoundsDepthRange = this->BoundsDepthRange;
-  if (this->Materials->GetHasHighlights())
-  {
-    this->Lights->Update(ren);
-    frame.Highlights = &this->Materials->GetHighlights();
-    frame.Lights = this->Lights;
-  }
+  const vtkRefractionShadeStage::Frame frame = this->FrameBuilder->Build(ren, this,
+    this->EnvironmentMode == ENVIRONMENT_RENDERER, sceneRefraction, this->MultiSampleSilhouette,
+    this->Materials, this->Lights, this->BoundsDepthRange);
   if (!this->ShadeStage->Prepare(ren, method, this, frame, false))
   {
     return;
@@ -510,9 +427,10 @@ void vtkRefractionPass::RenderGlass(
   this->GeometryStage->SetSheetPieceMaterials(this->Materials->GetSheetPieceMaterial());
   this->GeometryStage->Configure(glass, method->NeedsNormalDistance(), dataColour,
     this->BackSurface == BACK_SURFACE_NEAREST, peelLayers > 1, method->NeedsSHTransfer(),
-    this->InverseProjectionGL, this->Parallel);
+    frame.InverseProjection, frame.Parallel);
 
   // Stages this method does not run report no time (not the last method's).
+  this->StageTimers->SetEnabled(this->GPUTiming);
   for (int stage = 0; stage < TIMED_STAGE_COUNT; ++stage)
   {
     const bool runs =
@@ -520,8 +438,7 @@ void vtkRefractionPass::RenderGlass(
       (stage != TIMED_DEPTH_RANGE || method->NeedsDepthRange());
     if (!runs)
     {
-      this->StageMilliseconds[stage] = -1.0;
-      this->Timers[stage].reset();
+      this->StageTimers->Forget(stage);
     }
   }
   if (sceneRefraction)
@@ -530,24 +447,24 @@ void vtkRefractionPass::RenderGlass(
   }
   if (method->NeedsBackSurface())
   {
-    this->StartTimer(TIMED_BACK_CAPTURE);
+    this->StageTimers->Start(TIMED_BACK_CAPTURE);
     this->GeometryStage->DrawBack(ren, this->Targets);
-    this->StopTimer(TIMED_BACK_CAPTURE);
+    this->StageTimers->Stop(TIMED_BACK_CAPTURE);
   }
-  this->StartTimer(TIMED_FRONT);
+  this->StageTimers->Start(TIMED_FRONT);
   this->GeometryStage->DrawFront(ren, this->Targets);
   if (method->NeedsSceneColor())
   {
     this->GeometryStage->DrawMask(ren);
     this->CaptureScene(ren, false);
   }
-  this->StopTimer(TIMED_FRONT);
+  this->StageTimers->Stop(TIMED_FRONT);
   this->NumberOfRenderedProps += this->GeometryStage->GetNumberOfDrawnProps();
   // After the front capture, which does not read it: llvmpipe rasterizes the back capture
   // while it bins the front one, and waits for the back capture only here.
   if (method->NeedsDepthRange())
   {
-    this->StartTimer(TIMED_DEPTH_RANGE);
+    this->StageTimers->Start(TIMED_DEPTH_RANGE);
     if (reduction)
     {
       this->DepthRange->Reduce(renWin, this->Targets);
@@ -556,53 +473,37 @@ void vtkRefractionPass::RenderGlass(
     {
       vtkRefractionDepthRange::ComputeBounds(ren, glass, this->BoundsDepthRange);
     }
-    this->StopTimer(TIMED_DEPTH_RANGE);
+    this->StageTimers->Stop(TIMED_DEPTH_RANGE);
   }
   if (peelLayers > 1)
   {
     vtkRefractionDepthRange::ComputeBounds(ren, glass, this->BoundsDepthRange);
-    this->StartTimer(TIMED_BACK_CAPTURE);
+    this->StageTimers->Start(TIMED_BACK_CAPTURE);
     for (int layer = 1; layer < peelLayers; ++layer)
     {
       this->GeometryStage->DrawPeel(ren, this->Targets, layer);
     }
     const bool packed = this->LayerPack->Pack(renWin, this->Targets, peelLayers);
-    this->StopTimer(TIMED_BACK_CAPTURE);
+    this->StageTimers->Stop(TIMED_BACK_CAPTURE);
     if (!packed)
     {
       return;
     }
   }
 
-  this->StartTimer(TIMED_SHADE);
+  this->StageTimers->Start(TIMED_SHADE);
   this->ShadeStage->Render(ren, method, this, this->Targets, frame, materialIOR, materialSheet);
   if (frame.SampleComposite)
   {
     this->SampleComposite->Render(ren, this->GeometryStage, this->Targets, this->AntiAliasing);
   }
-  this->StopTimer(TIMED_SHADE);
+  this->StageTimers->Stop(TIMED_SHADE);
   if (this->DebugOutput && this->ShadeStage->Prepare(ren, method, this, frame, true))
   {
     this->DebugImage = this->ShadeStage->RenderDebug(
       ren, method, this, this->Targets, frame, materialIOR, materialSheet);
   }
   this->ReportGLError("the refraction pass's frame");
-}
-
-//------------------------------------------------------------------------------
-vtkTexture* vtkRefractionPass::GetCubeEnvironment(vtkOpenGLRenderer* ren)
-{
-  vtkTexture* environment = ren->GetEnvironmentTexture();
-  const bool cube = environment && environment->GetCubeMap() &&
-    vtkOpenGLTexture::SafeDownCast(environment) != nullptr;
-  if (environment && !cube && !this->WarnedEnvironment)
-  {
-    vtkWarningMacro("The renderer's environment texture is not an OpenGL cube map (wrap a "
-                    "lat-long image in vtkEquirectangularToCubeMapTexture); using the built-in "
-                    "environment.");
-  }
-  this->WarnedEnvironment = environment && !cube;
-  return cube ? environment : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -661,43 +562,6 @@ void vtkRefractionPass::ReportGLError(const char* call)
 }
 
 //------------------------------------------------------------------------------
-void vtkRefractionPass::UpdateCamera(vtkOpenGLRenderer* ren)
-{
-  vtkOpenGLCamera* camera = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
-  vtkMatrix4x4* wcvc = nullptr;
-  vtkMatrix3x3* normalMatrix = nullptr;
-  vtkMatrix4x4* vcdc = nullptr;
-  vtkMatrix4x4* wcdc = nullptr;
-  camera->GetKeyMatrices(ren, wcvc, normalMatrix, vcdc, wcdc);
-  // VTK's key matrices are already laid out for glUniformMatrix: pass them as VTK does.
-  this->ProjectionGL->DeepCopy(vcdc);
-  vtkMatrix4x4::Invert(vcdc, this->InverseProjectionGL);
-  // Row-major R (world to view) read as column-major by GLSL is R^T, view to world.
-  vtkMatrix4x4* view = camera->GetViewTransformMatrix();
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      this->ViewToWorld[r * 3 + c] = static_cast<float>(view->GetElement(r, c));
-    }
-  }
-  // The environment's frame, laid out as vtkOpenGLRenderer lays out envMatrix.
-  double up[3];
-  double right[3];
-  double front[3];
-  ren->GetEnvironmentUp(up);
-  ren->GetEnvironmentRight(right);
-  vtkMath::Cross(right, up, front);
-  for (int i = 0; i < 3; ++i)
-  {
-    this->EnvironmentMatrix[i * 3 + 0] = static_cast<float>(right[i]);
-    this->EnvironmentMatrix[i * 3 + 1] = static_cast<float>(up[i]);
-    this->EnvironmentMatrix[i * 3 + 2] = static_cast<float>(front[i]);
-  }
-  this->Parallel = camera->GetParallelProjection() != 0;
-}
-
-//------------------------------------------------------------------------------
 void vtkRefractionPass::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
@@ -710,14 +574,7 @@ void vtkRefractionPass::ReleaseGraphicsResources(vtkWindow* w)
   this->LayerPack->ReleaseGraphicsResources(w);
   this->ShadeStage->ReleaseGraphicsResources(w);
   this->Targets->ReleaseGraphicsResources(w);
-  for (auto& timer : this->Timers)
-  {
-    if (timer)
-    {
-      timer->ReleaseGraphicsResources();
-      timer.reset();
-    }
-  }
+  this->StageTimers->ReleaseGraphicsResources();
   this->Width = 0;
   this->Height = 0;
 }

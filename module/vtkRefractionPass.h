@@ -43,10 +43,10 @@ class vtkImageData;
 class vtkInformationDoubleKey;
 class vtkInformationDoubleVectorKey;
 class vtkInformationIntegerKey;
-class vtkOpenGLRenderTimer;
 class vtkOpenGLRenderer;
 class vtkProp;
 class vtkRefractionDepthRange;
+class vtkRefractionFrameBuilder;
 class vtkRefractionGeometryStage;
 class vtkRefractionGlassChecker;
 class vtkRefractionLayerPack;
@@ -56,8 +56,8 @@ class vtkRefractionMethod;
 class vtkRefractionOpaqueStep;
 class vtkRefractionSampleComposite;
 class vtkRefractionShadeStage;
+class vtkRefractionStageTimers;
 class vtkRefractionTargets;
-class vtkTexture;
 
 class VTKRENDERINGREFRACTION_EXPORT vtkRefractionPass : public vtkOpenGLRenderPass
 {
@@ -446,10 +446,6 @@ protected:
    * VTK_REPORT_OPENGL_ERRORS, so vtkOpenGLCheckErrorMacro says nothing there.
    */
   void ReportGLError(const char* call);
-  void UpdateCamera(vtkOpenGLRenderer* ren);
-  vtkTexture* GetCubeEnvironment(vtkOpenGLRenderer* ren);
-  void StartTimer(int stage);
-  void StopTimer(int stage);
 
   vtkRenderPass* DelegatePass = nullptr;
   vtkSmartPointer<vtkRefractionOpaqueStep> OpaqueStep;
@@ -492,23 +488,17 @@ protected:
   vtkNew<vtkRefractionLights> Lights;
   vtkSmartPointer<vtkRefractionMethod> MethodObject;
   int MethodObjectType = -1;
-  std::unique_ptr<vtkOpenGLRenderTimer> Timers[TIMED_STAGE_COUNT];
-  double StageMilliseconds[TIMED_STAGE_COUNT] = { -1.0, -1.0, -1.0, -1.0 };
+  vtkNew<vtkRefractionStageTimers> StageTimers;
+  vtkNew<vtkRefractionFrameBuilder> FrameBuilder;
 
   bool WarnedEmptyViewport = false;
   std::string WarnedSHTransfer; ///< the last reason SH fell back to DIR, said once
   std::string WarnedSceneDepth; ///< the last reason the scene could not be captured
   std::set<std::string> ReportedGLErrors; ///< the calls whose GL error was reported
-  bool WarnedEnvironment = false;
   int Width = 0;
   int Height = 0;
   int ViewportOrigin[2] = { 0, 0 };
   double BoundsDepthRange[2] = { 0.0, 0.0 };
-  vtkNew<vtkMatrix4x4> ProjectionGL;
-  vtkNew<vtkMatrix4x4> InverseProjectionGL;
-  float ViewToWorld[9] = { 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f };
-  float EnvironmentMatrix[9] = { 1.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f };
-  bool Parallel = false;
   vtkSmartPointer<vtkImageData> DebugImage;
 
 private:

@@ -1,0 +1,89 @@
+#include "vtkRefractionStageTimers.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderTimer.h"
+
+vtkStandardNewMacro(vtkRefractionStageTimers);
+
+//------------------------------------------------------------------------------
+vtkRefractionStageTimers::vtkRefractionStageTimers() = default;
+vtkRefractionStageTimers::~vtkRefractionStageTimers() = default;
+
+//------------------------------------------------------------------------------
+void vtkRefractionStageTimers::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Enabled: " << this->Enabled << "\n";
+  os << indent << "Stages: " << this->Timers.size() << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionStageTimers::SetNumberOfStages(int count)
+{
+  this->Timers.resize(count);
+  this->Milliseconds.resize(count, -1.0);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionStageTimers::Start(int stage)
+{
+  if (!this->Enabled || !vtkOpenGLRenderTimer::IsSupported())
+  {
+    return;
+  }
+  auto& timer = this->Timers[stage];
+  if (!timer)
+  {
+    timer = std::make_unique<vtkOpenGLRenderTimer>();
+  }
+  if (timer->Ready())
+  {
+    this->Milliseconds[stage] = timer->GetElapsedMilliseconds();
+  }
+  if (!timer->Started() || timer->Ready())
+  {
+    timer->Reset();
+    timer->Start();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionStageTimers::Stop(int stage)
+{
+  auto& timer = this->Timers[stage];
+  if (this->Enabled && timer && timer->Started() && !timer->Stopped())
+  {
+    timer->Stop();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionStageTimers::Forget(int stage)
+{
+  this->Milliseconds[stage] = -1.0;
+  this->Timers[stage].reset();
+}
+
+//------------------------------------------------------------------------------
+double vtkRefractionStageTimers::GetMilliseconds(int stage)
+{
+  auto& timer = this->Timers[stage];
+  if (timer && timer->Stopped() && timer->Ready())
+  {
+    this->Milliseconds[stage] = timer->GetElapsedMilliseconds();
+  }
+  return this->Milliseconds[stage];
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionStageTimers::ReleaseGraphicsResources()
+{
+  for (auto& timer : this->Timers)
+  {
+    if (timer)
+    {
+      timer->ReleaseGraphicsResources();
+      timer.reset();
+    }
+  }
+}

@@ -32,20 +32,12 @@ from paraview.simple import (Calculator, ColorBy, Contour, CreateView, Delete,
                              LoadState, Plane, ProgrammableSource, PVDReader, Render,
                              ResetSession, SaveData, SaveScreenshot, SaveState, SetActiveView,
                              Show, Sphere, Tetrahedralize, Wavelet)
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGReader
+
+# The shared helpers next to this script, whatever folders pvbatch or pvpython put on the path.
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from glass_images import check_that, read_png  # noqa: E402
 
 SIZE = 240
-
-
-def read_png(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    width, height, _ = image.GetDimensions()
-    pixels = vtk_to_numpy(image.GetPointData().GetScalars())
-    return pixels.reshape(height, width, -1)[:, :, :3].astype(numpy.int32)
 
 
 class Scene:
@@ -129,12 +121,6 @@ def grown(mask, steps=1):
         result[:, 1:] |= before[:, :-1]
         result[:, :-1] |= before[:, 1:]
     return result
-
-
-def check_that(condition, message):
-    print(("ok: " if condition else "FAILED: ") + message)
-    if not condition:
-        raise RuntimeError(message)
 
 
 def case_scene(scene):

@@ -10,24 +10,10 @@ import subprocess
 import sys
 
 import numpy
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGReader
 
-
-def read_png(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    width, height, _ = image.GetDimensions()
-    pixels = vtk_to_numpy(image.GetPointData().GetScalars())
-    return pixels.reshape(height, width, -1)[:, :, :3].astype(numpy.int32)
-
-
-def check_that(condition, message):
-    print(("ok: " if condition else "FAILED: ") + message)
-    if not condition:
-        raise RuntimeError(message)
+# The shared helpers next to this script, whatever folders pvbatch or pvpython put on the path.
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from glass_images import check_that, read_png  # noqa: E402
 
 
 if len(sys.argv) != 4:

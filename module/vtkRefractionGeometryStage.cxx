@@ -109,6 +109,10 @@ void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
   if (peel)
   {
     defines << "#define RF_PEEL_CAPTURE\n";
+    if (this->SignedFront)
+    {
+      defines << "#define RF_SIGNED_FRONT\n";
+    }
   }
   this->UseSHTransfer = shTransfer;
   this->SHTransfer->Retain(shTransfer ? glass : std::vector<vtkProp*>());
@@ -470,6 +474,10 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
   if (this->Stage == STAGE_PEEL && this->PeelPrevious && program->IsUniformUsed("rfPeelPrevious"))
   {
     program->SetUniformi("rfPeelPrevious", this->PeelPrevious->GetTextureUnit());
+    program->SetUniformi("rfOutwardFront", this->IsOutwardFront(prop) ? 1 : 0);
+  }
+  else if (this->Stage == STAGE_FRONT && program->IsUniformUsed("rfOutwardFront"))
+  {
     program->SetUniformi("rfOutwardFront", this->IsOutwardFront(prop) ? 1 : 0);
   }
   if (program->IsUniformUsed("rfWindingSign"))

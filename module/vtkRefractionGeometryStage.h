@@ -90,6 +90,11 @@ public:
   {
     this->SheetPieceMaterial = materials;
   }
+  /// Compositing PEEL's layers across ranks: the front layer's material carries the sign the
+  /// peeled layers' do (+ where the outward side faces the viewer), since a rank's front
+  /// surface may become a deeper layer of the whole; vtkRefractionGBufferComposite removes the
+  /// sign from the merged front layer. Takes effect at the next Configure.
+  void SetSignedFront(bool signedFront) { this->SignedFront = signedFront; }
   /// The glass meshes' surface model (solid or thin sheet, per connected piece).
   vtkRefractionSurfaceModel* GetSurfaceModel() { return this->SurfaceModel; }
 
@@ -142,6 +147,7 @@ private:
   bool DataColour = false;
   bool BackNearest = false;
   bool Peel = false;
+  bool SignedFront = false;
   vtkTextureObject* PeelPrevious = nullptr; ///< the layer the one being drawn peels behind
   bool Parallel = false;
   vtkNew<vtkMatrix4x4> InverseProjection;

@@ -9,6 +9,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkRefractionDepthRange.h"
 #include "vtkRefractionFrameBuilder.h"
+#include "vtkRefractionGBufferComposite.h"
 #include "vtkRefractionGeometryStage.h"
 #include "vtkRefractionGlassChecker.h"
 #include "vtkRefractionGlassKeys.h"
@@ -17,6 +18,7 @@
 #include "vtkRefractionMaterials.h"
 #include "vtkRefractionMethod.h"
 #include "vtkRefractionOpaqueStep.h"
+#include "vtkRefractionRankExchange.h"
 #include "vtkRefractionSampleComposite.h"
 #include "vtkRefractionSHTransfer.h"
 #include "vtkRefractionShadeStage.h"
@@ -105,6 +107,8 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TextureBytes: " << this->GetTextureBytes() << "\n";
   os << indent << "DebugOutput: " << this->DebugOutput << "\n";
   os << indent << "NumberOfGlassProps: " << this->NumberOfGlassProps << "\n";
+  os << indent << "RankExchange: " << this->RankExchange << "\n";
+  os << indent << "UseCompositingBackground: " << this->UseCompositingBackground << "\n";
   os << indent << "DelegatePass: ";
   if (this->DelegatePass)
   {
@@ -267,7 +271,9 @@ void vtkRefractionPass::Render(const vtkRenderState* s)
   std::vector<vtkProp*> glass;
   std::vector<vtkProp*> others;
   this->GlassChecker->SplitProps(s, glass, &others);
-  if (glass.empty() && static_cast<int>(others.size()) == s->GetPropArrayCount())
+  // Compositing across ranks, a rank without glass still takes part in the frame's exchange.
+  if (glass.empty() && static_cast<int>(others.size()) == s->GetPropArrayCount() &&
+    !this->CompositingExchange())
   {
     this->DelegatePass->Render(s);
     this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
@@ -290,7 +296,8 @@ int vtkRefractionPass::RenderOpaqueAndGlass(const vtkRenderState* s, vtkRenderPa
   std::vector<vtkProp*> others;
   this->GlassChecker->SplitProps(s, glass, &others);
   this->NumberOfRenderedProps = 0;
-  if (glass.empty() && static_cast<int>(others.size()) == s->GetPropArrayCount())
+  if (glass.empty() && static_cast<int>(others.size()) == s->GetPropArrayCount() &&
+    !this->CompositingExchange())
   {
     opaque->Render(s);
     return opaque->GetNumberOfRenderedProps();
@@ -310,7 +317,21 @@ void vtkRefractionPass::RenderGlass(
   const vtkRenderState* s, std::vector<vtkProp*>& glass, bool opaqueScene)
 {
   this->NumberOfGlassProps = static_cast<int>(glass.size());
-  if (glass.empty())
+  this->Composited = false;
+  // With ranks to composite across, every decision below that the ranks' pieces could take
+  // differently is taken together (a maximum over the ranks), so that they all draw the same
+  // targets and meet in the same exchange.
+  vtkRefractionRankExchange* exchange = this->CompositingExchange();
+  auto agree = [exchange](bool local) -> bool {
+    if (!exchange)
+    {
+      return local;
+    }
+    int value = local ? 1 : 0;
+    exchange->AllReduceMax(&value, 1);
+    return value != 0;
+  };
+  if (!agree(!glass.empty()))
   {
     return;
   }
@@ -346,8 +367,12 @@ void vtkRefractionPass::RenderGlass(
   if (methodType == SH)
   {
     std::string reason;
-    if (!vtkRefractionSHTransfer::Check(glass, reason))
+    if (agree(!glass.empty() && !vtkRefractionSHTransfer::Check(glass, reason)))
     {
+      if (reason.empty())
+      {
+        reason = "another rank's piece cannot use it";
+      }
       if (reason != this->WarnedSHTransfer)
       {
         vtkWarningMacro("SH: " << reason << "; drawing the glass with DIR.");
@@ -371,18 +396,26 @@ void vtkRefractionPass::RenderGlass(
   // The scene behind the glass is captured only where it can show: opaque props drawn, a
   // method that follows rays through it.
   bool sceneRefraction =
-    this->SceneRefraction && opaqueScene && method->SupportsSceneRefraction();
-  if (sceneRefraction)
+    this->SceneRefraction && agree(opaqueScene) && method->SupportsSceneRefraction();
+  // Composited across ranks, SSP's scene colour is merged by the scene's depth, so captured
+  // with it too.
+  bool sceneCapture = sceneRefraction || (exchange && method->NeedsSceneColor());
+  if (sceneCapture)
   {
     std::string error;
-    if (!this->Targets->MatchSceneDepth(error))
+    if (agree(!this->Targets->MatchSceneDepth(error)))
     {
+      if (error.empty())
+      {
+        error = "another rank's framebuffer has no depth to capture";
+      }
       if (error != this->WarnedSceneDepth)
       {
         vtkErrorMacro("Scene refraction is off: " << error << ".");
       }
       this->WarnedSceneDepth = error;
       sceneRefraction = false;
+      sceneCapture = false;
     }
     else
     {
@@ -391,7 +424,7 @@ void vtkRefractionPass::RenderGlass(
   }
   std::vector<bool> wanted;
   method->AddTargets(wanted, this);
-  if (sceneRefraction)
+  if (sceneCapture)
   {
     wanted[vtkRefractionTargets::SCENE_COLOR] = true;
     wanted[vtkRefractionTargets::SCENE_DEPTH] = true;
@@ -399,16 +432,31 @@ void vtkRefractionPass::RenderGlass(
   this->Materials->Update(glass, this->GeometryStage->GetSurfaceModel(),
     this->DataColour && method->SupportsSceneRefraction(), this->AbsorptionDistance,
     this->ThinSheetThickness);
-  const bool dataColour = this->Materials->GetDataColour();
+  const bool dataColour = agree(this->Materials->GetDataColour());
   wanted[vtkRefractionTargets::FRONT_COLOR] = dataColour;
   wanted[vtkRefractionTargets::GLASS_COLOR] = true; // the shading stage's output
   wanted[vtkRefractionTargets::CORNER_Z] = this->AntiAliasing;
   wanted[vtkRefractionTargets::DEBUG_0] = this->DebugOutput;
   wanted[vtkRefractionTargets::DEBUG_1] = this->DebugOutput;
   this->Targets->Update(renWin, this->Width, this->Height, wanted, reduction);
-  const vtkRefractionShadeStage::Frame frame = this->FrameBuilder->Build(ren, this,
-    this->EnvironmentMode == ENVIRONMENT_RENDERER, sceneRefraction, this->MultiSampleSilhouette,
+  vtkRefractionShadeStage::Frame frame = this->FrameBuilder->Build(ren, this,
+    this->EnvironmentMode == ENVIRONMENT_RENDERER, sceneRefraction,
+    this->MultiSampleSilhouette && !exchange,
     this->Materials, this->Lights, this->BoundsDepthRange);
+  // A compositor that draws each rank over black (IceT) has the real background given here.
+  const bool compositingBackground = exchange && this->UseCompositingBackground;
+  if (compositingBackground)
+  {
+    const bool gradient = ren->GetGradientBackground();
+    for (int c = 0; c < 3; ++c)
+    {
+      frame.Background[c] = this->CompositingBackground[c];
+      if (!gradient)
+      {
+        frame.Background2[c] = this->CompositingBackground[c];
+      }
+    }
+  }
   if (!this->ShadeStage->Prepare(ren, method, this, frame, false))
   {
     return;
@@ -425,6 +473,7 @@ void vtkRefractionPass::RenderGlass(
   const int peelLayers = method->GetPeelLayers(this);
   this->GeometryStage->SetSHSmoothing(this->SHSmoothing);
   this->GeometryStage->SetSheetPieceMaterials(this->Materials->GetSheetPieceMaterial());
+  this->GeometryStage->SetSignedFront(exchange && peelLayers > 1);
   this->GeometryStage->Configure(glass, method->NeedsNormalDistance(), dataColour,
     this->BackSurface == BACK_SURFACE_NEAREST, peelLayers > 1, method->NeedsSHTransfer(),
     frame.InverseProjection, frame.Parallel);
@@ -441,7 +490,7 @@ void vtkRefractionPass::RenderGlass(
       this->StageTimers->Forget(stage);
     }
   }
-  if (sceneRefraction)
+  if (sceneCapture)
   {
     this->CaptureScene(ren, true); // before any glass is drawn into the framebuffer
   }
@@ -453,13 +502,54 @@ void vtkRefractionPass::RenderGlass(
   }
   this->StageTimers->Start(TIMED_FRONT);
   this->GeometryStage->DrawFront(ren, this->Targets);
-  if (method->NeedsSceneColor())
+  if (method->NeedsSceneColor() && !exchange)
   {
     this->GeometryStage->DrawMask(ren);
     this->CaptureScene(ren, false);
   }
   this->StageTimers->Stop(TIMED_FRONT);
   this->NumberOfRenderedProps += this->GeometryStage->GetNumberOfDrawnProps();
+  if (exchange)
+  {
+    // Every rank's G-buffers drawn (PEEL's layers too), then merged on rank 0, which shades.
+    if (peelLayers > 1)
+    {
+      this->StageTimers->Start(TIMED_BACK_CAPTURE);
+      for (int layer = 1; layer < peelLayers; ++layer)
+      {
+        this->GeometryStage->DrawPeel(ren, this->Targets, layer);
+      }
+      this->StageTimers->Stop(TIMED_BACK_CAPTURE);
+    }
+    if ((method->NeedsDepthRange() && !reduction) || peelLayers > 1)
+    {
+      vtkRefractionDepthRange::ComputeBounds(ren, glass, this->BoundsDepthRange);
+      this->BoundsDepthRange[0] = exchange->AllReduceMin(this->BoundsDepthRange[0]);
+      this->BoundsDepthRange[1] = exchange->AllReduceMax(this->BoundsDepthRange[1]);
+    }
+    vtkRefractionGBufferComposite::Request request;
+    request.FrontColour = dataColour;
+    request.FrontAux = method->NeedsNormalDistance();
+    request.FrontSH = method->NeedsSHTransfer();
+    request.Back = method->NeedsBackSurface();
+    request.BackNearest = this->BackSurface == BACK_SURFACE_NEAREST;
+    request.PeelLayers = peelLayers;
+    request.Scene = sceneCapture;
+    request.SSPMask = method->NeedsSceneColor();
+    request.FillBackground = compositingBackground;
+    for (int c = 0; c < 3; ++c)
+    {
+      request.Background[c] = frame.Background[c];
+      request.Background2[c] = frame.Background2[c];
+    }
+    this->Composited =
+      this->GBufferComposite->Composite(renWin, this->Targets, request, exchange);
+    this->ReportGLError("the G-buffers' transfer for compositing across ranks");
+    if (exchange->GetRank() != 0)
+    {
+      return;
+    }
+  }
   // After the front capture, which does not read it: llvmpipe rasterizes the back capture
   // while it bins the front one, and waits for the back capture only here.
   if (method->NeedsDepthRange())
@@ -469,7 +559,7 @@ void vtkRefractionPass::RenderGlass(
     {
       this->DepthRange->Reduce(renWin, this->Targets);
     }
-    else
+    else if (!exchange) // agreed over the ranks above
     {
       vtkRefractionDepthRange::ComputeBounds(ren, glass, this->BoundsDepthRange);
     }
@@ -477,11 +567,14 @@ void vtkRefractionPass::RenderGlass(
   }
   if (peelLayers > 1)
   {
-    vtkRefractionDepthRange::ComputeBounds(ren, glass, this->BoundsDepthRange);
     this->StageTimers->Start(TIMED_BACK_CAPTURE);
-    for (int layer = 1; layer < peelLayers; ++layer)
+    if (!exchange) // drawn and composited above
     {
-      this->GeometryStage->DrawPeel(ren, this->Targets, layer);
+      vtkRefractionDepthRange::ComputeBounds(ren, glass, this->BoundsDepthRange);
+      for (int layer = 1; layer < peelLayers; ++layer)
+      {
+        this->GeometryStage->DrawPeel(ren, this->Targets, layer);
+      }
     }
     const bool packed = this->LayerPack->Pack(renWin, this->Targets, peelLayers);
     this->StageTimers->Stop(TIMED_BACK_CAPTURE);
@@ -504,6 +597,37 @@ void vtkRefractionPass::RenderGlass(
       ren, method, this, this->Targets, frame, materialIOR, materialSheet);
   }
   this->ReportGLError("the refraction pass's frame");
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::SetRankExchange(vtkRefractionRankExchange* exchange)
+{
+  if (exchange != this->RankExchange)
+  {
+    this->RankExchange = exchange;
+    this->Modified();
+  }
+}
+
+vtkRefractionRankExchange* vtkRefractionPass::GetRankExchange()
+{
+  return this->RankExchange;
+}
+
+vtkRefractionRankExchange* vtkRefractionPass::CompositingExchange()
+{
+  return this->RankExchange && this->RankExchange->GetNumberOfRanks() > 1 ? this->RankExchange
+                                                                            : nullptr;
+}
+
+double vtkRefractionPass::GetCompositeMilliseconds() const
+{
+  return this->Composited ? this->GBufferComposite->GetMilliseconds() : 0.0;
+}
+
+unsigned long long vtkRefractionPass::GetCompositeBufferBytes() const
+{
+  return this->Composited ? this->GBufferComposite->GetBufferBytes() : 0;
 }
 
 //------------------------------------------------------------------------------

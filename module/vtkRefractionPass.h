@@ -48,12 +48,14 @@ class vtkProp;
 class vtkRefractionDepthRange;
 class vtkRefractionFrameBuilder;
 class vtkRefractionGeometryStage;
+class vtkRefractionGBufferComposite;
 class vtkRefractionGlassChecker;
 class vtkRefractionLayerPack;
 class vtkRefractionLights;
 class vtkRefractionMaterials;
 class vtkRefractionMethod;
 class vtkRefractionOpaqueStep;
+class vtkRefractionRankExchange;
 class vtkRefractionSampleComposite;
 class vtkRefractionShadeStage;
 class vtkRefractionStageTimers;
@@ -429,6 +431,38 @@ public:
   /// Number of glass props drawn by the last render.
   vtkGetMacro(NumberOfGlassProps, int);
 
+  ///@{
+  /**
+   * Sort-last parallel rendering (ParaView on several MPI ranks): with an exchange of more
+   * than one rank, every rank draws its piece of the glass into its G-buffers, the buffers
+   * are composited across the ranks (vtkRefractionGBufferComposite: the nearest front, the
+   * furthest back, PEEL's nearest layers, the nearest opaque scene) and rank 0 shades the
+   * whole glass once; the other ranks draw only their opaque props, and the depth compositing
+   * that follows puts everything in its place. Every rank must render each frame (the
+   * exchange's calls are collective). The multisampled silhouette (which redraws the glass's
+   * own geometry) is off while compositing; ISR's d_N is each rank's piece's. Null (the
+   * default) or one rank: one process, as without.
+   */
+  void SetRankExchange(vtkRefractionRankExchange* exchange);
+  vtkRefractionRankExchange* GetRankExchange();
+  /// The last frame's milliseconds in the G-buffer compositing on this rank (0 without it).
+  double GetCompositeMilliseconds() const;
+  /// Bytes of one rank's G-buffers in the last composited frame (each rank but rank 0 sends
+  /// one buffer per frame; 0 without compositing).
+  unsigned long long GetCompositeBufferBytes() const;
+  /**
+   * The renderer's real background (its bottom colour with a gradient) while compositing
+   * across ranks, for compositors that draw each rank over black and add the background
+   * afterwards (ParaView's IceT pass): the glass then refracts this colour, and SSP's captured
+   * scene has it where no opaque prop is. Used only while compositing, and only when
+   * UseCompositingBackground is on.
+   */
+  vtkSetVector3Macro(CompositingBackground, double);
+  vtkGetVector3Macro(CompositingBackground, double);
+  vtkSetMacro(UseCompositingBackground, bool);
+  vtkGetMacro(UseCompositingBackground, bool);
+  ///@}
+
   void Render(const vtkRenderState* s) override;
   void ReleaseGraphicsResources(vtkWindow* w) override;
 
@@ -440,6 +474,8 @@ protected:
   int RenderOpaqueAndGlass(const vtkRenderState* s, vtkRenderPass* opaque);
   void RenderGlass(const vtkRenderState* s, std::vector<vtkProp*>& glass, bool opaqueScene);
   void CaptureScene(vtkOpenGLRenderer* ren, bool depth);
+  /// The exchange when it has more than one rank, else nullptr.
+  vtkRefractionRankExchange* CompositingExchange();
   /**
    * Any OpenGL error pending is reported as an error of `call` (once per call: the same fault
    * every frame would flood the log) and cleared. Debian's VTK is built without
@@ -490,6 +526,11 @@ protected:
   int MethodObjectType = -1;
   vtkNew<vtkRefractionStageTimers> StageTimers;
   vtkNew<vtkRefractionFrameBuilder> FrameBuilder;
+  vtkSmartPointer<vtkRefractionRankExchange> RankExchange;
+  vtkNew<vtkRefractionGBufferComposite> GBufferComposite;
+  bool Composited = false; ///< whether the last frame composited across ranks
+  double CompositingBackground[3] = { 0.0, 0.0, 0.0 };
+  bool UseCompositingBackground = false;
 
   bool WarnedEmptyViewport = false;
   std::string WarnedSHTransfer; ///< the last reason SH fell back to DIR, said once

@@ -10,7 +10,8 @@
 //    colour VTK computed (the actor's, or the scalars through the lookup table; alpha: how much
 //    of an edge VTK draws there, with EdgeVisibility), with
 //    RF_GBUFFER_NORMAL_DISTANCE (its output index) ISR's d_N, with RF_GBUFFER_SH (its output
-//    index) the SH method's exit direction and length.
+//    index) the SH method's exit direction and length. With RF_SIGNED_FRONT (PEEL composited
+//    across ranks) the material is signed as a peeled layer's.
 //  2 back: DIR pass 1 (Oliveira & Brauwers 2007, section 3.1): outward normal and (in alpha)
 //    -z_view of the back surface. Drawn with GL_GREATER and depth cleared to 0, so the furthest surface
 //    wins whatever the mesh's winding; empty texels keep 0, which is what the search tests
@@ -207,8 +208,17 @@ vec3 rfReconstructPositionVC()
     }
     else
     {
+      float rfFrontMaterial = RF_FRAGMENT_MATERIAL;
+#ifdef RF_SIGNED_FRONT
+      // Composited across ranks (vtkRefractionGeometryStage::SetSignedFront): signed as a
+      // peeled layer's, since this surface may become a deeper layer of the whole glass.
+      if (gl_FrontFacing != (rfOutwardFront == 1))
+      {
+        rfFrontMaterial = -rfFrontMaterial;
+      }
+#endif
       gl_FragData[0] =
-        vec4(rf_oct_encode(dot(rfN, rfV) > 0.0 ? -rfN : rfN), -rfP.z, RF_FRAGMENT_MATERIAL);
+        vec4(rf_oct_encode(dot(rfN, rfV) > 0.0 ? -rfN : rfN), -rfP.z, rfFrontMaterial);
 #ifdef RF_GBUFFER_COLOUR
       // Literal indices: VTK maps gl_FragData[n] to its outputs by their text.
       gl_FragData[1] = vec4(clamp(rfDataColour.rgb, 0.0, 1.0), RF_EDGE_MIX);

@@ -1,6 +1,8 @@
 #include "vtkGlassRenderView.h"
 
 #include "vtkDualDepthPeelingPass.h"
+#include "vtkGlassBoundsProp.h"
+#include "vtkGlassRankExchange.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpaquePass.h"
@@ -16,6 +18,8 @@ vtkStandardNewMacro(vtkGlassRenderView);
 
 vtkGlassRenderView::vtkGlassRenderView()
   : GlassPass(vtkSmartPointer<vtkRefractionPass>::New())
+  , RankExchange(vtkSmartPointer<vtkGlassRankExchange>::New())
+  , BoundsProp(vtkSmartPointer<vtkGlassBoundsProp>::New())
 {
   this->SynchronizedRenderers->SetRenderPass(this->GlassPass);
 }
@@ -25,27 +29,85 @@ vtkGlassRenderView::~vtkGlassRenderView() = default;
 void vtkGlassRenderView::AboutToRenderOnLocalProcess(bool interactive)
 {
   this->Superclass::AboutToRenderOnLocalProcess(interactive);
+  // Sort-last across ranks: every rank renders this frame and IceT composites the images.
+  // One process, or a frame rendered on one process only (the data delivered there), has
+  // nobody to exchange with.
+  const bool acrossRanks = this->AcrossRanks && this->SynchronizedRenderers->GetEnabled() &&
+    !this->SynchronizedRenderers->GetDataReplicatedOnAllProcesses() &&
+    this->RankExchange->GetNumberOfRanks() > 1;
+
   // ParaView applies FXAA in vtkRenderer::UpdateGeometry, which its default pass calls and
   // this one does not; with an image processing pass (tone mapping) its own pass chain has an
-  // FXAA pass. So: the glass pass inside an FXAA pass when FXAA is on and the chain has none.
-  const bool fxaa = this->GetRenderer()->GetUseFXAA() &&
-    this->SynchronizedRenderers->GetImageProcessingPass() == nullptr;
+  // FXAA pass. So FXAA is added here when it is on and the chain has none: around the glass
+  // pass on one process; across ranks, on the composited image (IceT's image processing
+  // pass), since an edge filter before the compositing would see each rank's part alone.
+  vtkImageProcessingPass* imagePass = this->SynchronizedRenderers->GetImageProcessingPass();
+  const bool ownImagePass = imagePass && imagePass == this->CompositedFXAAPass;
+  const bool fxaa = this->GetRenderer()->GetUseFXAA() && (!imagePass || ownImagePass);
   vtkRenderPass* wanted = this->GlassPass;
-  if (fxaa)
+  if (fxaa && acrossRanks)
   {
-    if (!this->FXAAPass)
+    if (!this->CompositedFXAAPass)
     {
-      this->FXAAPass = vtkSmartPointer<vtkOpenGLFXAAPass>::New();
-      this->FXAAPass->SetDelegatePass(this->GlassPass);
+      this->CompositedFXAAPass = vtkSmartPointer<vtkOpenGLFXAAPass>::New();
     }
-    this->FXAAPass->SetFXAAOptions(this->GetRenderer()->GetFXAAOptions());
-    wanted = this->FXAAPass;
+    this->CompositedFXAAPass->SetFXAAOptions(this->GetRenderer()->GetFXAAOptions());
+    if (!ownImagePass)
+    {
+      this->SynchronizedRenderers->SetImageProcessingPass(this->CompositedFXAAPass);
+    }
+
+  }
+  else
+  {
+    if (ownImagePass)
+    {
+      this->SynchronizedRenderers->SetImageProcessingPass(nullptr);
+    }
+    if (fxaa)
+    {
+      if (!this->FXAAPass)
+      {
+        this->FXAAPass = vtkSmartPointer<vtkOpenGLFXAAPass>::New();
+        this->FXAAPass->SetDelegatePass(this->GlassPass);
+      }
+      this->FXAAPass->SetFXAAOptions(this->GetRenderer()->GetFXAAOptions());
+      wanted = this->FXAAPass;
+    }
   }
   if (this->SynchronizedRenderers->GetRenderPass() != wanted)
   {
     this->SynchronizedRenderers->SetRenderPass(wanted);
   }
   this->ConfigureDelegate();
+
+  this->GlassPass->SetRankExchange(acrossRanks ? this->RankExchange.GetPointer() : nullptr);
+  this->CompositeRanks = acrossRanks ? this->RankExchange->GetNumberOfRanks() : 1;
+  this->GlassPass->SetUseCompositingBackground(acrossRanks);
+  this->GlassPass->SetCompositingBackground(this->GetRenderer()->GetBackground());
+  // The exchange is collective: IceT must call every rank's pass, those with nothing visible
+  // too (vtkPVRenderView::Render sets ParaView's own choice again before each frame). And
+  // rank 0 shades the whole glass, so its image counts wherever the data are.
+  if (acrossRanks)
+  {
+    this->SynchronizedRenderers->SetRenderEmptyImages(true);
+  }
+  const bool wholeBounds = acrossRanks && this->RankExchange->GetRank() == 0;
+  vtkRenderer* renderer = this->GetRenderer();
+  if (wholeBounds)
+  {
+    double bounds[6];
+    this->GeometryBounds.GetBounds(bounds);
+    this->BoundsProp->SetPropBounds(bounds);
+    if (!renderer->HasViewProp(this->BoundsProp))
+    {
+      renderer->AddViewProp(this->BoundsProp);
+    }
+  }
+  else if (renderer->HasViewProp(this->BoundsProp))
+  {
+    renderer->RemoveViewProp(this->BoundsProp);
+  }
 }
 
 void vtkGlassRenderView::ConfigureDelegate()
@@ -128,6 +190,32 @@ int vtkGlassRenderView::GetNumberOfGlassProps()
   return this->GlassPass->GetNumberOfGlassProps();
 }
 
+double vtkGlassRenderView::GetGlassCompositeMilliseconds()
+{
+  return this->GlassPass->GetCompositeMilliseconds();
+}
+
+double vtkGlassRenderView::GetGlassCompositeBufferBytes()
+{
+  return static_cast<double>(this->GlassPass->GetCompositeBufferBytes());
+}
+
+void vtkGlassRenderView::SetGlassAcrossRanks(int on)
+{
+  this->AcrossRanks = on != 0;
+  this->Modified();
+}
+
+int vtkGlassRenderView::GetGlassAcrossRanks()
+{
+  return this->AcrossRanks ? 1 : 0;
+}
+
+int vtkGlassRenderView::GetGlassCompositeRanks()
+{
+  return this->CompositeRanks;
+}
+
 vtkRefractionPass* vtkGlassRenderView::GetGlassPass()
 {
   return this->GlassPass;
@@ -140,4 +228,8 @@ void vtkGlassRenderView::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SSAOPass: " << this->SSAOPass << "\n";
   os << indent << "PeelingPass: " << this->PeelingPass << "\n";
   os << indent << "FXAAPass: " << this->FXAAPass << "\n";
+  os << indent << "CompositedFXAAPass: " << this->CompositedFXAAPass << "\n";
+  os << indent << "RankExchange: " << this->RankExchange << "\n";
+  os << indent << "BoundsProp: " << this->BoundsProp << "\n";
+  os << indent << "CompositeRanks: " << this->CompositeRanks << "\n";
 }

@@ -14,6 +14,12 @@
  *
  * ParaView 5.11 gives a representation no way to add a render pass to the ordinary Render
  * View (vtkPVSynchronizedRenderer owns and rebuilds the view's pass chain), hence this view.
+ *
+ * On several MPI ranks, on the frames ParaView composites across them (its synchronized
+ * renderers enabled: sort-last with IceT), the pass gets a vtkGlassRankExchange: the ranks'
+ * G-buffers are composited and rank 0 shades the whole glass, so the picture does not depend
+ * on how the data are distributed. The renderer's background, which IceT draws each rank
+ * without, is given to the pass for what the glass refracts.
  */
 #ifndef vtkGlassRenderView_h
 #define vtkGlassRenderView_h
@@ -22,6 +28,8 @@
 #include "vtkPVRenderView.h"
 #include "vtkSmartPointer.h" // For members
 
+class vtkGlassBoundsProp;
+class vtkGlassRankExchange;
 class vtkRefractionPass;
 class vtkSSAOPass;
 class vtkDualDepthPeelingPass;
@@ -66,6 +74,18 @@ public:
   /// The pass itself.
   vtkRefractionPass* GetGlassPass();
 
+  ///@{
+  /// Across MPI ranks (pvbatch or pvserver on several ranks), the last frame's G-buffer
+  /// compositing on this rank: milliseconds, bytes of one rank's buffers (each rank but 0
+  /// sends one per frame), and the number of ranks it composited (1: none).
+  double GetGlassCompositeMilliseconds();
+  /// Composite across ranks (default on); off, each rank refracts its own piece only.
+  void SetGlassAcrossRanks(int on);
+  int GetGlassAcrossRanks();
+  double GetGlassCompositeBufferBytes();
+  int GetGlassCompositeRanks();
+  ///@}
+
 protected:
   vtkGlassRenderView();
   ~vtkGlassRenderView() override;
@@ -80,6 +100,11 @@ protected:
   vtkSmartPointer<vtkSSAOPass> SSAOPass;
   vtkSmartPointer<vtkDualDepthPeelingPass> PeelingPass;
   vtkSmartPointer<vtkOpenGLFXAAPass> FXAAPass;
+  vtkSmartPointer<vtkOpenGLFXAAPass> CompositedFXAAPass; ///< IceT's image pass, across ranks
+  vtkSmartPointer<vtkGlassRankExchange> RankExchange;
+  vtkSmartPointer<vtkGlassBoundsProp> BoundsProp;
+  int CompositeRanks = 1;
+  bool AcrossRanks = true;
   int DelegateSSAO = -1;
   int DelegatePeeling = -1;
 

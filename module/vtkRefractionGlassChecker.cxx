@@ -42,9 +42,10 @@ void vtkRefractionGlassChecker::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-void vtkRefractionGlassChecker::SplitProps(
-  const vtkRenderState* s, std::vector<vtkProp*>& glass, std::vector<vtkProp*>* others)
+void vtkRefractionGlassChecker::SplitProps(const vtkRenderState* s,
+  std::vector<vtkProp*>& glass, std::vector<vtkProp*>* others, bool acrossRanks)
 {
+  this->QuietEmpty = acrossRanks;
   glass.clear();
   if (others)
   {
@@ -86,6 +87,23 @@ void vtkRefractionGlassChecker::SplitProps(
         std::find(s->GetPropArray(), arrayEnd, prop) == arrayEnd)
       {
         this->CheckGlassProp(prop);
+      }
+    }
+  }
+  if (acrossRanks && viewProps)
+  {
+    glass.clear();
+    vtkCollectionSimpleIterator it;
+    viewProps->InitTraversal(it);
+    while (vtkProp* prop = viewProps->GetNextProp(it))
+    {
+      if (prop->GetVisibility() && vtkRefractionGlassKeys::IsGlass(prop))
+      {
+        const int verdict = this->CheckGlassProp(prop);
+        if (verdict == GLASS_OK || verdict == GLASS_EMPTY)
+        {
+          glass.push_back(prop);
+        }
       }
     }
   }
@@ -196,12 +214,16 @@ int vtkRefractionGlassChecker::CheckGlassProp(vtkProp* prop)
   }
   if (points == 0 || cells == 0)
   {
+    check.Verdict = GLASS_EMPTY;
+    if (this->QuietEmpty)
+    {
+      return check.Verdict;
+    }
     const std::string what = composite
       ? "composite data set (" + std::to_string(blocks.size()) + " polydata blocks, "
       : std::string("vtkPolyData (");
     vtkWarningMacro("Glass prop " << name << " has an empty " << what << points << " points, "
                                   << cells << " cells): nothing to draw.");
-    check.Verdict = GLASS_SKIPPED;
     return check.Verdict;
   }
   if (surfaces == 0)

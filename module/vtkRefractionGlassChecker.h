@@ -28,9 +28,13 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// The state's props: the glass to draw as glass, and (when `others` is given) the rest,
-  /// including glass props drawn as ordinary actors.
+  /// including glass props drawn as ordinary actors. With `acrossRanks` (compositing across
+  /// MPI ranks, where each rank holds a piece of each glass prop and some pieces are empty),
+  /// the glass is every visible glass prop of the renderer that is not refused, empty ones
+  /// included and said nothing of, in the renderer's order: the same list on every rank,
+  /// whose position is the material index the composited G-buffers carry.
   void SplitProps(const vtkRenderState* s, std::vector<vtkProp*>& glass,
-    std::vector<vtkProp*>* others);
+    std::vector<vtkProp*>* others, bool acrossRanks = false);
 
 protected:
   vtkRefractionGlassChecker() = default;
@@ -44,7 +48,8 @@ private:
   {
     GLASS_OK = 0,
     GLASS_AS_ORDINARY = 1, ///< drawn as an ordinary actor (bad IOR, no polygons)
-    GLASS_SKIPPED = 2      ///< not drawn (empty, NaN or infinite points)
+    GLASS_SKIPPED = 2,     ///< not drawn (NaN or infinite points, cells naming no point)
+    GLASS_EMPTY = 3        ///< not drawn: no points or no cells
   };
   struct GlassCheck
   {
@@ -55,6 +60,7 @@ private:
     int Verdict = GLASS_OK;
   };
   int CheckGlassProp(vtkProp* prop);
+  bool QuietEmpty = false; ///< an empty piece is ordinary across ranks: no warning
   /// Points named by cells exist, coordinates are finite; else false and why in `error`.
   static bool CheckMesh(vtkPolyData* poly, std::string& error);
   // Says once per prop that a translucent glass actor is left to VTK's translucent pass.

@@ -23,6 +23,7 @@
 #include "vtkRefractionSHTransfer.h"
 #include "vtkRefractionShadeStage.h"
 #include "vtkRefractionStageTimers.h"
+#include "vtkRefractionSurfaceModel.h"
 #include "vtkRefractionTargets.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
@@ -270,7 +271,7 @@ void vtkRefractionPass::Render(const vtkRenderState* s)
   // Another kind of delegate: it draws everything but the glass, then the glass goes on top.
   std::vector<vtkProp*> glass;
   std::vector<vtkProp*> others;
-  this->GlassChecker->SplitProps(s, glass, &others);
+  this->GlassChecker->SplitProps(s, glass, &others, this->CompositingExchange() != nullptr);
   // Compositing across ranks, a rank without glass still takes part in the frame's exchange.
   if (glass.empty() && static_cast<int>(others.size()) == s->GetPropArrayCount() &&
     !this->CompositingExchange())
@@ -294,7 +295,7 @@ int vtkRefractionPass::RenderOpaqueAndGlass(const vtkRenderState* s, vtkRenderPa
 {
   std::vector<vtkProp*> glass;
   std::vector<vtkProp*> others;
-  this->GlassChecker->SplitProps(s, glass, &others);
+  this->GlassChecker->SplitProps(s, glass, &others, this->CompositingExchange() != nullptr);
   this->NumberOfRenderedProps = 0;
   if (glass.empty() && static_cast<int>(others.size()) == s->GetPropArrayCount() &&
     !this->CompositingExchange())
@@ -429,6 +430,7 @@ void vtkRefractionPass::RenderGlass(
     wanted[vtkRefractionTargets::SCENE_COLOR] = true;
     wanted[vtkRefractionTargets::SCENE_DEPTH] = true;
   }
+  this->GeometryStage->GetSurfaceModel()->SetAcrossRanks(exchange != nullptr);
   this->Materials->Update(glass, this->GeometryStage->GetSurfaceModel(),
     this->DataColour && method->SupportsSceneRefraction(), this->AbsorptionDistance,
     this->ThinSheetThickness);

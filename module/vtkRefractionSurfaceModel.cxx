@@ -210,6 +210,13 @@ vtkRefractionSurfaceModel::Prop vtkRefractionSurfaceModel::GetProp(vtkProp* prop
   }
   total.WindingSign = volume < 0.0 ? -1 : 1;
   total.Boundary = total.Blocks > 0 && total.OpenBlocks == total.Blocks;
+  if (this->AcrossRanks)
+  {
+    total.Boundary = false;
+    total.OpenBlocks = 0;
+    total.MixedBlocks = 0;
+    total.PerPiece = nullptr;
+  }
   return total;
 }
 

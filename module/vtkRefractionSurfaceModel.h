@@ -72,6 +72,11 @@ public:
   /// Forgets the meshes when more than `keep` are cached (entries of polydata that went away).
   void Prune(size_t keep);
 
+  /// Compositing across MPI ranks, each rank holds a piece of each mesh, cut open where the
+  /// data were split: an automatic surface model cannot tell those cuts from real boundaries,
+  /// so every automatic prop is a solid (SetSurfaceModel(THIN_SHEET) marks open surfaces).
+  void SetAcrossRanks(bool acrossRanks) { this->AcrossRanks = acrossRanks; }
+
 protected:
   vtkRefractionSurfaceModel() = default;
   ~vtkRefractionSurfaceModel() override = default;
@@ -81,6 +86,7 @@ private:
   void operator=(const vtkRefractionSurfaceModel&) = delete;
 
   std::map<vtkPolyData*, Mesh> Meshes;
+  bool AcrossRanks = false;
 };
 
 #endif

@@ -24,7 +24,7 @@ fi
 # GLEW, ...) and fails on the first one whose headers are missing, but the package depends on
 # none of their -dev packages: they are listed here.
 packages=(cmake g++ make paraview paraview-dev python3-paraview python3-dev libgl1-mesa-dri libegl-dev
-  xvfb xauth
+  xvfb xauth openmpi-bin
   mpi-default-dev libhdf5-mpi-dev python3-mpi4py libboost-dev libdouble-conversion-dev
   libeigen3-dev libexpat1-dev libfreetype-dev libgl-dev libgl2ps-dev libglew-dev libjpeg-dev
   liblz4-dev liblzma-dev libnetcdf-dev libpng-dev libtheora-dev libtiff-dev libutfcpp-dev

@@ -8,18 +8,21 @@
       PEEL at each step, and DIR with GlassAcrossRanks off (each rank refracting its own
       piece: the negative control). Checks that the data are split over all N ranks and that
       the glass was composited across N ranks.
-  pvbatch TestGlassMPI.py compare ONE_RANK_DIR N_RANK_DIR [MIN_PSNR]
-      Every picture of N ranks against one rank's: at least MIN_PSNR dB (default 40), and the
-      negative control below it (so the comparison can fail).
-  pvpython TestGlassMPI.py client SERVER_URL PLUGIN OUTPUT_DIR
-      The render case from a client connected to pvserver, rendering remotely.
+  pvbatch TestGlassMPI.py compare ONE_RANK_DIR N_RANK_DIR [MIN_PSNR [PEEL_MIN_PSNR]]
+      Every picture of N ranks against one rank's: at least MIN_PSNR dB (default 40; PEEL's
+      pictures PEEL_MIN_PSNR, default the same), and the negative control below MIN_PSNR (so
+      the comparison can fail).
+  pvpython TestGlassMPI.py client HOST:PORT PLUGIN OUTPUT_DIR [RANKS]
+      The render case from a client connected to pvserver (TestGlassMPIServer.sh starts it on
+      several ranks), rendering remotely.
 """
 import os
 import sys
 
 import numpy
 
-from paraview.simple import (Connect, Contour, CreateView, GetSettingsProxy, LoadPlugin,
+from paraview.simple import (Connect, Contour, CreateView, GetSettingsProxy,
+                             GhostCellsGenerator, LoadPlugin,
                              Plane, ProcessIdScalars, Render, SaveScreenshot, SetActiveView,
                              Show, Calculator, ColorBy, Wavelet)
 
@@ -39,21 +42,30 @@ def psnr(a, b):
 
 def render(plugin, output_dir, ranks_expected=None, remote=False):
     os.makedirs(output_dir, exist_ok=True)
-    LoadPlugin(plugin, remote=remote, ns=globals())
+    LoadPlugin(plugin, remote=False, ns=globals())
+    if remote:
+        LoadPlugin(plugin, remote=True, ns=globals())
     if remote:
         # Remote rendering for any size of data: the server's ranks render, IceT composites.
         GetSettingsProxy("RenderViewSettings").RemoteRenderThreshold = 0.0
     view = CreateView("GlassRenderView")
     view.ViewSize = [SIZE, SIZE]
     view.OrientationAxesVisibility = 0
-    if os.environ.get("RF_NOFXAA"):
-        view.UseFXAA = 0
+    # ParaView's FXAA (on by default) is applied across ranks to the composited image, which
+    # IceT hands over with a black background where one process has the real one: FXAA's
+    # edge search then ends differently along every edge that meets the background (measured
+    # 36-39 dB against one process for every method, none above 40). What this test measures
+    # is the glass's compositing, so FXAA is off; docs/paraview.md says so.
+    view.UseFXAA = 0
     SetActiveView(view)
     Render(view)
 
     wavelet = Wavelet()
-    glass = Contour(Input=wavelet, ContourBy=["POINTS", "RTData"], Isosurfaces=[200.0])
-    core = Contour(Input=wavelet, ContourBy=["POINTS", "RTData"], Isosurfaces=[250.0])
+    # A layer of ghost cells: the contour's normals (the field's gradient) at a rank's border
+    # are then those one process computes.
+    ghosts = GhostCellsGenerator(Input=wavelet, BuildIfRequired=0, MinimumNumberOfGhosts=1)
+    glass = Contour(Input=ghosts, ContourBy=["POINTS", "RTData"], Isosurfaces=[200.0])
+    core = Contour(Input=ghosts, ContourBy=["POINTS", "RTData"], Isosurfaces=[250.0])
     pieces = ProcessIdScalars(Input=glass)
     display = Show(glass, view)
     display.SetRepresentationType("Glass")
@@ -98,7 +110,9 @@ def render(plugin, output_dir, ranks_expected=None, remote=False):
         for method, value in METHODS.items():
             view.GlassMethod = value
             composited = picture("%s_%d" % (method, step))
-            if ranks > 1:
+            # A client's information properties are its own view's (one process): the
+            # pictures say whether the server composited.
+            if ranks > 1 and not remote:
                 check_that(composited == ranks,
                            "%s step %d: the glass composited across %d ranks (%d)"
                            % (method, step, ranks, composited))
@@ -107,9 +121,16 @@ def render(plugin, output_dir, ranks_expected=None, remote=False):
     view.GlassAcrossRanks = 0
     picture("separate_DIR_0")
     view.GlassAcrossRanks = 1
+    # How the data are split: the contour as an opaque surface coloured by rank.
+    display.Visibility = 0
+    core_display.Visibility = 0
+    ranks_display = Show(pieces, view)
+    ColorBy(ranks_display, ("POINTS", "ProcessId"))
+    ranks_display.RescaleTransferFunctionToDataRange(True)
+    picture("separate_pieces")
 
 
-def compare(one_dir, many_dir, min_psnr):
+def compare(one_dir, many_dir, min_psnr, peel_min_psnr):
     worst = 100.0
     names = sorted(n for n in os.listdir(one_dir)
                    if n.endswith(".png") and not n.startswith("separate_"))
@@ -122,8 +143,9 @@ def compare(one_dir, many_dir, min_psnr):
         differing = int((numpy.abs(a - b).max(axis=2) > 0).sum())
         print("%-12s %6.1f dB, %d pixels differ" % (name, value, differing))
         worst = min(worst, value)
-        check_that(value >= min_psnr, "%s: %.1f dB >= %.1f dB against one rank"
-                   % (name, value, min_psnr))
+        wanted = peel_min_psnr if name.startswith("PEEL") else min_psnr
+        check_that(value >= wanted, "%s: %.1f dB >= %.1f dB against one rank"
+                   % (name, value, wanted))
     control = psnr(read_png(os.path.join(one_dir, "DIR_0.png")),
                    read_png(os.path.join(many_dir, "separate_DIR_0.png")))
     print("negative control (each rank its own piece): %.1f dB" % control)
@@ -139,9 +161,13 @@ if __name__ == "__main__":
         expected = int(sys.argv[4]) if len(sys.argv) > 4 else None
         render(sys.argv[2], sys.argv[3], expected)
     elif mode == "compare":
-        compare(sys.argv[2], sys.argv[3], float(sys.argv[4]) if len(sys.argv) > 4 else 40.0)
+        minimum = float(sys.argv[4]) if len(sys.argv) > 4 else 40.0
+        compare(sys.argv[2], sys.argv[3], minimum,
+                float(sys.argv[5]) if len(sys.argv) > 5 else minimum)
     elif mode == "client":
-        Connect(sys.argv[2])
+        host, port = sys.argv[2].rsplit(":", 1)
+        check_that(Connect(host, int(port)) is not None,
+                   "connected to pvserver at %s" % sys.argv[2])
         render(sys.argv[3], sys.argv[4], int(sys.argv[5]) if len(sys.argv) > 5 else None,
                remote=True)
     else:

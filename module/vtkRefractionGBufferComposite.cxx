@@ -26,6 +26,7 @@ void vtkRefractionGBufferComposite::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Planes: " << this->Planes.size() << "\n";
   os << indent << "BufferBytes: " << this->BufferBytes << "\n";
   os << indent << "Milliseconds: " << this->Milliseconds << "\n";
+  os << indent << "WaitMilliseconds: " << this->WaitMilliseconds << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -264,10 +265,14 @@ void vtkRefractionGBufferComposite::FillBackground(const Request& request)
 bool vtkRefractionGBufferComposite::Composite(vtkOpenGLRenderWindow* renWin,
   vtkRefractionTargets* targets, const Request& request, vtkRefractionRankExchange* exchange)
 {
+  renWin->MakeCurrent();
+  // The G-buffers' drawing finished first, so that the time below is the compositing's (a
+  // read-back would wait for it anyway: llvmpipe rasterizes when results are needed).
+  glFinish();
   const double start = vtkTimerLog::GetUniversalTime();
+  this->WaitMilliseconds = 0.0;
   const int rank = exchange->GetRank();
   const int ranks = exchange->GetNumberOfRanks();
-  renWin->MakeCurrent();
   // Every rank describes the same planes (the same request and sizes), so a failure here is
   // everyone's, and nobody waits for a message that will not come.
   int failed = this->Describe(targets, request) ? 0 : 1;
@@ -296,7 +301,11 @@ bool vtkRefractionGBufferComposite::Composite(vtkOpenGLRenderWindow* renWin,
     if (rank % (2 * step) == 0 && rank + step < ranks)
     {
       this->Incoming.resize(this->BufferBytes);
-      if (!exchange->Receive(this->Incoming.data(), this->BufferBytes, rank + step))
+      const double waitStart = vtkTimerLog::GetUniversalTime();
+      const bool received =
+        exchange->Receive(this->Incoming.data(), this->BufferBytes, rank + step);
+      this->WaitMilliseconds += 1000.0 * (vtkTimerLog::GetUniversalTime() - waitStart);
+      if (!received)
       {
         ok = false;
         break;

@@ -64,8 +64,11 @@ public:
     const Request& request, vtkRefractionRankExchange* exchange);
 
   /// The last frame's wall-clock milliseconds in Composite on this rank (read-back, messages,
-  /// merges, upload) and the bytes of one rank's buffer (each rank but 0 sends one per frame).
+  /// merges, upload; the G-buffers' own drawing is finished before the clock starts) and the bytes of one rank's buffer (each rank but 0 sends one per frame).
   double GetMilliseconds() const { return this->Milliseconds; }
+  /// Of those, the milliseconds blocked in Receive: waiting for the ranks that send (their
+  /// drawing, when they take longer than this rank) and the messages themselves.
+  double GetWaitMilliseconds() const { return this->WaitMilliseconds; }
   unsigned long long GetBufferBytes() const { return this->BufferBytes; }
 
 protected:
@@ -101,6 +104,7 @@ private:
   std::vector<float> KeptKeys;
   std::vector<float> IncomingKeys;
   double Milliseconds = 0.0;
+  double WaitMilliseconds = 0.0;
   unsigned long long BufferBytes = 0;
 };
 

@@ -627,6 +627,11 @@ double vtkRefractionPass::GetCompositeMilliseconds() const
   return this->Composited ? this->GBufferComposite->GetMilliseconds() : 0.0;
 }
 
+double vtkRefractionPass::GetCompositeWaitMilliseconds() const
+{
+  return this->Composited ? this->GBufferComposite->GetWaitMilliseconds() : 0.0;
+}
+
 unsigned long long vtkRefractionPass::GetCompositeBufferBytes() const
 {
   return this->Composited ? this->GBufferComposite->GetBufferBytes() : 0;

@@ -447,6 +447,8 @@ public:
   vtkRefractionRankExchange* GetRankExchange();
   /// The last frame's milliseconds in the G-buffer compositing on this rank (0 without it).
   double GetCompositeMilliseconds() const;
+  /// Of those, the milliseconds blocked receiving (waiting for slower ranks, and the messages).
+  double GetCompositeWaitMilliseconds() const;
   /// Bytes of one rank's G-buffers in the last composited frame (each rank but rank 0 sends
   /// one buffer per frame; 0 without compositing).
   unsigned long long GetCompositeBufferBytes() const;

@@ -51,11 +51,11 @@ def render(plugin, output_dir, ranks_expected=None, remote=False):
     view = CreateView("GlassRenderView")
     view.ViewSize = [SIZE, SIZE]
     view.OrientationAxesVisibility = 0
-    # ParaView's FXAA (on by default) is applied across ranks to the composited image, which
-    # IceT hands over with a black background where one process has the real one: FXAA's
-    # edge search then ends differently along every edge that meets the background (measured
-    # 36-39 dB against one process for every method, none above 40). What this test measures
-    # is the glass's compositing, so FXAA is off; docs/paraview.md says so.
+    # ParaView's FXAA (on by default) does not give one process's picture across ranks, glass
+    # or not: the view applies it to the composited image (IceT's image pass), and the saved
+    # picture keeps jagged silhouettes where one process's are smoothed, while edges inside
+    # change (36-39 dB against one process for every method; the cause is not found). What
+    # this test measures is the glass's compositing, so FXAA is off; docs/paraview.md says so.
     view.UseFXAA = 0
     SetActiveView(view)
     Render(view)

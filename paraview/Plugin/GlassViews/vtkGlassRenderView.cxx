@@ -195,6 +195,11 @@ double vtkGlassRenderView::GetGlassCompositeMilliseconds()
   return this->GlassPass->GetCompositeMilliseconds();
 }
 
+double vtkGlassRenderView::GetGlassCompositeWaitMilliseconds()
+{
+  return this->GlassPass->GetCompositeWaitMilliseconds();
+}
+
 double vtkGlassRenderView::GetGlassCompositeBufferBytes()
 {
   return static_cast<double>(this->GlassPass->GetCompositeBufferBytes());

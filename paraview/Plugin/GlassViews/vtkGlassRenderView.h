@@ -79,6 +79,7 @@ public:
   /// compositing on this rank: milliseconds, bytes of one rank's buffers (each rank but 0
   /// sends one per frame), and the number of ranks it composited (1: none).
   double GetGlassCompositeMilliseconds();
+  double GetGlassCompositeWaitMilliseconds();
   /// Composite across ranks (default on); off, each rank refracts its own piece only.
   void SetGlassAcrossRanks(int on);
   int GetGlassAcrossRanks();

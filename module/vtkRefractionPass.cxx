@@ -122,88 +122,6 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-// The glass settings live on the prop's keys, written and read by vtkRefractionGlassKeys (which
-// the stages include instead of this class); the published API forwards there.
-static_assert(static_cast<int>(vtkRefractionPass::SURFACE_AUTO) ==
-      static_cast<int>(vtkRefractionGlassKeys::SURFACE_AUTO) &&
-    static_cast<int>(vtkRefractionPass::SURFACE_SOLID) ==
-      static_cast<int>(vtkRefractionGlassKeys::SURFACE_SOLID) &&
-    static_cast<int>(vtkRefractionPass::SURFACE_THIN_SHEET) ==
-      static_cast<int>(vtkRefractionGlassKeys::SURFACE_THIN_SHEET),
-  "vtkRefractionPass::SurfaceModelType and vtkRefractionGlassKeys::SurfaceModelType differ");
-static_assert(
-  vtkRefractionPass::DefaultGlassSpecular == vtkRefractionGlassKeys::DefaultGlassSpecular &&
-    vtkRefractionPass::DefaultGlassSpecularPower ==
-      vtkRefractionGlassKeys::DefaultGlassSpecularPower,
-  "vtkRefractionPass's and vtkRefractionGlassKeys's default glass specular terms differ");
-
-vtkInformationIntegerKey* vtkRefractionPass::GLASS()
-{
-  return vtkRefractionGlassKeys::GLASS();
-}
-
-vtkInformationDoubleKey* vtkRefractionPass::INDEX_OF_REFRACTION()
-{
-  return vtkRefractionGlassKeys::INDEX_OF_REFRACTION();
-}
-
-vtkInformationIntegerKey* vtkRefractionPass::SURFACE_MODEL()
-{
-  return vtkRefractionGlassKeys::SURFACE_MODEL();
-}
-
-vtkInformationDoubleVectorKey* vtkRefractionPass::DISPERSION()
-{
-  return vtkRefractionGlassKeys::DISPERSION();
-}
-
-const char* vtkRefractionPass::GetISRDistanceArrayName()
-{
-  return vtkRefractionGlassKeys::GetISRDistanceArrayName();
-}
-
-bool vtkRefractionPass::MakeGlass(vtkProp* prop, double indexOfRefraction)
-{
-  return vtkRefractionGlassKeys::MakeGlass(prop, indexOfRefraction);
-}
-
-void vtkRefractionPass::SetSurfaceModel(vtkProp* prop, int model)
-{
-  vtkRefractionGlassKeys::SetSurfaceModel(prop, model);
-}
-
-void vtkRefractionPass::ClearGlass(vtkProp* prop)
-{
-  vtkRefractionGlassKeys::ClearGlass(prop);
-}
-
-bool vtkRefractionPass::SetDispersion(vtkProp* prop, double red, double green, double blue)
-{
-  return vtkRefractionGlassKeys::SetDispersion(prop, red, green, blue);
-}
-
-void vtkRefractionPass::ClearDispersion(vtkProp* prop)
-{
-  vtkRefractionGlassKeys::ClearDispersion(prop);
-}
-
-bool vtkRefractionPass::GetDispersion(vtkProp* prop, double rgb[3])
-{
-  return vtkRefractionGlassKeys::GetDispersion(prop, rgb);
-}
-
-bool vtkRefractionPass::IsGlass(vtkProp* prop)
-{
-  return vtkRefractionGlassKeys::IsGlass(prop);
-}
-
-double vtkRefractionPass::GetIndexOfRefraction(vtkProp* prop)
-{
-  return vtkRefractionGlassKeys::GetIndexOfRefraction(prop);
-}
-
-
-//------------------------------------------------------------------------------
 void vtkRefractionPass::SetSearchSteps(int steps)
 {
   if (rf_validate_cbs_steps(steps) != RF_OK)
@@ -511,46 +429,11 @@ void vtkRefractionPass::RenderGlass(
   }
   this->StageTimers->Stop(TIMED_FRONT);
   this->NumberOfRenderedProps += this->GeometryStage->GetNumberOfDrawnProps();
-  if (exchange)
+  if (exchange &&
+    !this->CompositeAcrossRanks(ren, renWin, glass, method, frame.Background, frame.Background2,
+      peelLayers, reduction, dataColour, sceneCapture, compositingBackground, exchange))
   {
-    // Every rank's G-buffers drawn (PEEL's layers too), then merged on rank 0, which shades.
-    if (peelLayers > 1)
-    {
-      this->StageTimers->Start(TIMED_BACK_CAPTURE);
-      for (int layer = 1; layer < peelLayers; ++layer)
-      {
-        this->GeometryStage->DrawPeel(ren, this->Targets, layer);
-      }
-      this->StageTimers->Stop(TIMED_BACK_CAPTURE);
-    }
-    if ((method->NeedsDepthRange() && !reduction) || peelLayers > 1)
-    {
-      vtkRefractionDepthRange::ComputeBounds(ren, glass, this->BoundsDepthRange);
-      this->BoundsDepthRange[0] = exchange->AllReduceMin(this->BoundsDepthRange[0]);
-      this->BoundsDepthRange[1] = exchange->AllReduceMax(this->BoundsDepthRange[1]);
-    }
-    vtkRefractionGBufferComposite::Request request;
-    request.FrontColour = dataColour;
-    request.FrontAux = method->NeedsNormalDistance();
-    request.FrontSH = method->NeedsSHTransfer();
-    request.Back = method->NeedsBackSurface();
-    request.BackNearest = this->BackSurface == BACK_SURFACE_NEAREST;
-    request.PeelLayers = peelLayers;
-    request.Scene = sceneCapture;
-    request.SSPMask = method->NeedsSceneColor();
-    request.FillBackground = compositingBackground;
-    for (int c = 0; c < 3; ++c)
-    {
-      request.Background[c] = frame.Background[c];
-      request.Background2[c] = frame.Background2[c];
-    }
-    this->Composited =
-      this->GBufferComposite->Composite(renWin, this->Targets, request, exchange);
-    this->ReportGLError("the G-buffers' transfer for compositing across ranks");
-    if (exchange->GetRank() != 0)
-    {
-      return;
-    }
+    return; // rank 0 shades the whole glass
   }
   // After the front capture, which does not read it: llvmpipe rasterizes the back capture
   // while it bins the front one, and waits for the back capture only here.
@@ -599,42 +482,6 @@ void vtkRefractionPass::RenderGlass(
       ren, method, this, this->Targets, frame, materialIOR, materialSheet);
   }
   this->ReportGLError("the refraction pass's frame");
-}
-
-//------------------------------------------------------------------------------
-void vtkRefractionPass::SetRankExchange(vtkRefractionRankExchange* exchange)
-{
-  if (exchange != this->RankExchange)
-  {
-    this->RankExchange = exchange;
-    this->Modified();
-  }
-}
-
-vtkRefractionRankExchange* vtkRefractionPass::GetRankExchange()
-{
-  return this->RankExchange;
-}
-
-vtkRefractionRankExchange* vtkRefractionPass::CompositingExchange()
-{
-  return this->RankExchange && this->RankExchange->GetNumberOfRanks() > 1 ? this->RankExchange
-                                                                            : nullptr;
-}
-
-double vtkRefractionPass::GetCompositeMilliseconds() const
-{
-  return this->Composited ? this->GBufferComposite->GetMilliseconds() : 0.0;
-}
-
-double vtkRefractionPass::GetCompositeWaitMilliseconds() const
-{
-  return this->Composited ? this->GBufferComposite->GetWaitMilliseconds() : 0.0;
-}
-
-unsigned long long vtkRefractionPass::GetCompositeBufferBytes() const
-{
-  return this->Composited ? this->GBufferComposite->GetBufferBytes() : 0;
 }
 
 //------------------------------------------------------------------------------

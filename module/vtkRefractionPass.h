@@ -43,6 +43,7 @@ class vtkImageData;
 class vtkInformationDoubleKey;
 class vtkInformationDoubleVectorKey;
 class vtkInformationIntegerKey;
+class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
 class vtkProp;
 class vtkRefractionDepthRange;
@@ -476,6 +477,15 @@ protected:
   int RenderOpaqueAndGlass(const vtkRenderState* s, vtkRenderPass* opaque);
   void RenderGlass(const vtkRenderState* s, std::vector<vtkProp*>& glass, bool opaqueScene);
   void CaptureScene(vtkOpenGLRenderer* ren, bool depth);
+  /**
+   * Across ranks (vtkRefractionPassRanks.cxx): draws PEEL's layers, agrees the bounds' depth
+   * range, composites the G-buffers onto rank 0 (vtkRefractionGBufferComposite) and returns
+   * whether this rank goes on to shade (rank 0).
+   */
+  bool CompositeAcrossRanks(vtkOpenGLRenderer* ren, vtkOpenGLRenderWindow* renWin,
+    const std::vector<vtkProp*>& glass, vtkRefractionMethod* method, const double background[3],
+    const double background2[3], int peelLayers, bool reduction, bool dataColour,
+    bool sceneCapture, bool compositingBackground, vtkRefractionRankExchange* exchange);
   /// The exchange when it has more than one rank, else nullptr.
   vtkRefractionRankExchange* CompositingExchange();
   /**

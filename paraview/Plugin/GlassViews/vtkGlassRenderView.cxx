@@ -56,7 +56,6 @@ void vtkGlassRenderView::AboutToRenderOnLocalProcess(bool interactive)
     {
       this->SynchronizedRenderers->SetImageProcessingPass(this->CompositedFXAAPass);
     }
-
   }
   else
   {

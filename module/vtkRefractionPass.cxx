@@ -349,9 +349,13 @@ void vtkRefractionPass::RenderGlass(
     wanted[vtkRefractionTargets::SCENE_DEPTH] = true;
   }
   this->GeometryStage->GetSurfaceModel()->SetAcrossRanks(exchange != nullptr);
+  // Across ranks, what is sized from the glass's bounds (PEEL's and DIR's search lengths,
+  // PEEL's fault test, the automatic sheet thickness and tint) is sized from the whole props'.
+  const std::vector<double> wholeBounds =
+    exchange ? AgreeGlassBounds(glass, exchange) : std::vector<double>();
   this->Materials->Update(glass, this->GeometryStage->GetSurfaceModel(),
     this->DataColour && method->SupportsSceneRefraction(), this->AbsorptionDistance,
-    this->ThinSheetThickness);
+    this->ThinSheetThickness, exchange ? &wholeBounds : nullptr);
   const bool dataColour = agree(this->Materials->GetDataColour());
   wanted[vtkRefractionTargets::FRONT_COLOR] = dataColour;
   wanted[vtkRefractionTargets::GLASS_COLOR] = true; // the shading stage's output

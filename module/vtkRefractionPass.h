@@ -488,6 +488,10 @@ protected:
     bool sceneCapture, bool compositingBackground, vtkRefractionRankExchange* exchange);
   /// The exchange when it has more than one rank, else nullptr.
   vtkRefractionRankExchange* CompositingExchange();
+  /// Each glass prop's bounds across the ranks (6 values per prop; xmin > xmax: none): a
+  /// rank's own are those of its piece (vtkRefractionPassRanks.cxx; a collective call).
+  static std::vector<double> AgreeGlassBounds(
+    const std::vector<vtkProp*>& glass, vtkRefractionRankExchange* exchange);
   /**
    * Any OpenGL error pending is reported as an error of `call` (once per call: the same fault
    * every frame would flood the log) and cleared. Debian's VTK is built without

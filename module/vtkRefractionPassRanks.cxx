@@ -4,6 +4,7 @@
 #include "vtkRefractionPass.h"
 
 #include "vtkOpenGLError.h"
+#include "vtkProp.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkRefractionDepthRange.h"
@@ -56,6 +57,26 @@ bool vtkRefractionPass::CompositeAcrossRanks(vtkOpenGLRenderer* ren,
     this->GBufferComposite->Composite(renWin, this->Targets, request, exchange);
   this->ReportGLError("the G-buffers' transfer for compositing across ranks");
   return exchange->GetRank() == 0;
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkRefractionPass::AgreeGlassBounds(
+  const std::vector<vtkProp*>& glass, vtkRefractionRankExchange* exchange)
+{
+  // The glass list is the same on every rank (empty pieces kept), so the calls pair up.
+  std::vector<double> bounds(6 * glass.size());
+  for (size_t i = 0; i < glass.size(); ++i)
+  {
+    const double* piece = glass[i]->GetBounds();
+    const bool present = piece && piece[0] <= piece[1];
+    for (int k = 0; k < 3; ++k)
+    {
+      bounds[6 * i + 2 * k] = exchange->AllReduceMin(present ? piece[2 * k] : VTK_DOUBLE_MAX);
+      bounds[6 * i + 2 * k + 1] =
+        exchange->AllReduceMax(present ? piece[2 * k + 1] : -VTK_DOUBLE_MAX);
+    }
+  }
+  return bounds;
 }
 
 //------------------------------------------------------------------------------

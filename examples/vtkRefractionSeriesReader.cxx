@@ -1,5 +1,8 @@
 #include "vtkRefractionSeriesReader.h"
 
+#include "rfDeclaredSizes.h"
+#include "rfReadInChild.h"
+
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
@@ -319,6 +322,15 @@ bool vtkRefractionSeriesReader::ReadIndex(size_t index)
   if (!reader)
   {
     return this->Fail("'" + path + "': unknown file type");
+  }
+  std::string unreadable;
+  if (!rfCheckDeclaredSizes(path, unreadable))
+  {
+    return this->Fail("cannot read '" + path + "': " + unreadable);
+  }
+  if (!rfReadsWithoutCrashing(reader, unreadable))
+  {
+    return this->Fail("cannot read '" + path + "': " + unreadable);
   }
   std::string readerError;
   vtkNew<vtkCallbackCommand> keep;

@@ -18,6 +18,7 @@
 #include "rf_validate.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -255,6 +256,25 @@ bool vtkRefractionGlassChecker::CheckMesh(vtkPolyData* poly, std::string& error)
     {
       continue;
     }
+    if (k >= 2)
+    {
+      // A polygon or strip of fewer than 3 points bounds nothing, and VTK's own filters on
+      // the way (vtkPolyDataNormals decomposing strips) read past such a cell.
+      vtkDataArray* offsets = cells->GetOffsetsArray();
+      for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
+      {
+        const vtkIdType size = static_cast<vtkIdType>(offsets->GetComponent(c + 1, 0)) -
+          static_cast<vtkIdType>(offsets->GetComponent(c, 0));
+        if (size < 3)
+        {
+          std::ostringstream text;
+          text << "has a " << kindNames[k] << " cell (cell " << c << " of its "
+               << kindNames[k] << "s) of " << size << " points (at least 3)";
+          error = text.str();
+          return false;
+        }
+      }
+    }
     double range[2];
     cells->GetConnectivityArray()->GetRange(range, 0);
     if (range[0] < 0.0 || range[1] >= static_cast<double>(points))
@@ -279,7 +299,8 @@ bool vtkRefractionGlassChecker::CheckMesh(vtkPolyData* poly, std::string& error)
   {
     double p[3];
     coordinates->GetTuple(i, p);
-    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+    // Beyond FLT_MAX, a coordinate is infinite in OpenGL's floats.
+    if (!(std::fabs(p[0]) <= FLT_MAX && std::fabs(p[1]) <= FLT_MAX && std::fabs(p[2]) <= FLT_MAX))
     {
       if (bad++ == 0)
       {
@@ -292,7 +313,8 @@ bool vtkRefractionGlassChecker::CheckMesh(vtkPolyData* poly, std::string& error)
   {
     std::ostringstream text;
     text << "has " << bad << " of " << points
-         << " points with NaN or infinite coordinates (the first: point " << first << " = ("
+         << " points with NaN, infinite or too large coordinates (beyond " << FLT_MAX
+         << ", which OpenGL's floats do not hold; the first: point " << first << " = ("
          << firstPoint[0] << ", " << firstPoint[1] << ", " << firstPoint[2] << "))";
     error = text.str();
     return false;

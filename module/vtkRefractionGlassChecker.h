@@ -3,7 +3,8 @@
  * @brief   Sorts a render state's props into glass and the rest, and checks the glass.
  *
  * A glass prop with a bad index of refraction (set on the keys by hand) or without polygons
- * is drawn as an ordinary actor; one with an empty vtkPolyData or NaN/infinite points is not
+ * is drawn as an ordinary actor; one with an empty vtkPolyData, NaN/infinite points (or
+ * beyond float range), cells naming missing points or polygons of fewer than 3 points is not
  * drawn. Each verdict is reported once, with the prop and the value, and kept until the
  * prop's index or data change, so a static scene scans no points and repeats no message.
  */
@@ -36,6 +37,11 @@ public:
   void SplitProps(const vtkRenderState* s, std::vector<vtkProp*>& glass,
     std::vector<vtkProp*>* others, bool acrossRanks = false);
 
+  /// Points named by cells exist, polygons and strips have 3 points or more, coordinates are
+  /// finite and within float range; else false and why in `error` ("has ..."). Also what the
+  /// reference module's filters check before they read a glass mesh.
+  static bool CheckMesh(vtkPolyData* poly, std::string& error);
+
 protected:
   vtkRefractionGlassChecker() = default;
   ~vtkRefractionGlassChecker() override = default;
@@ -61,8 +67,6 @@ private:
   };
   int CheckGlassProp(vtkProp* prop);
   bool QuietEmpty = false; ///< an empty piece is ordinary across ranks: no warning
-  /// Points named by cells exist, coordinates are finite; else false and why in `error`.
-  static bool CheckMesh(vtkPolyData* poly, std::string& error);
   // Says once per prop that a translucent glass actor is left to VTK's translucent pass.
   void CheckOpacity(vtkProp* prop);
   std::map<vtkProp*, GlassCheck> GlassChecks;

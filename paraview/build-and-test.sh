@@ -45,7 +45,9 @@ cmake --build build -j "$(nproc)"
 cd build
 runner=()
 if [ -z "${DISPLAY:-}" ]; then
-  runner=(xvfb-run -a -s "-screen 0 1280x1024x24")
+  # -noreset: without it Xvfb resets when its last client leaves, and refuses a client that
+  # connects meanwhile (scripts/test.sh says how often); the MPI tests start several at once.
+  runner=(xvfb-run -a -s "-screen 0 1280x1024x24 -noreset")
 fi
 # The tests across MPI ranks (label mpi) are left out unless RF_MPI_TESTS=1: one run in about
 # ten of paraview.mpi_render_4_ranks hung, rank 0 in IceT's first communicator set-up

@@ -17,7 +17,9 @@ rf_status rf_mesh_scene_build(rf_mesh_scene* s, const float* positions, size_t v
   memset(s, 0, sizeof(*s));
   for (i = 0; i < 3 * vertex_count; ++i)
   {
-    if (!isfinite(positions[i]))
+    /* Beyond, Embree takes a ray as invalid (a failed assertion in Debian's build): as good
+     * as infinite to a float ray tracer. */
+    if (!(fabsf(positions[i]) < RF_MESH_SCENE_LARGEST))
     {
       return RF_ERR_NOT_FINITE;
     }

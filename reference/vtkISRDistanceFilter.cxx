@@ -11,8 +11,10 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkRefractionGlassChecker.h"
 #include "vtkTimerLog.h"
 
+#include <string>
 
 vtkStandardNewMacro(vtkISRDistanceFilter);
 
@@ -39,6 +41,16 @@ int vtkISRDistanceFilter::RequestData(
   distances->SetNumberOfTuples(pointCount);
   distances->Fill(0.0);
   output->GetPointData()->AddArray(distances);
+  std::string malformed;
+  if (!vtkRefractionGlassChecker::CheckMesh(input, malformed))
+  {
+    // The pass refuses such glass too; reading its cells would go beyond its points.
+    vtkErrorMacro(
+      "Cannot compute ISR distances: the input " << malformed << "; the output keeps zeros.");
+    this->LastComputeSeconds = 0.0;
+    this->UpdateProgress(1.0);
+    return 1;
+  }
   if (pointCount == 0 || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
   {
     this->LastComputeSeconds = 0.0;

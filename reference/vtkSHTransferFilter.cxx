@@ -14,6 +14,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkRefractionGlassChecker.h"
 #include "vtkTimerLog.h"
 
 #include <vtksys/SystemTools.hxx>
@@ -22,6 +23,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkSHTransferFilter);
@@ -160,6 +162,16 @@ int vtkSHTransferFilter::RequestData(
     vertexIds->SetValue(i, static_cast<float>(i));
   }
   output->GetPointData()->AddArray(vertexIds);
+  std::string malformed;
+  if (!vtkRefractionGlassChecker::CheckMesh(input, malformed))
+  {
+    // The pass refuses such glass too; reading its cells would go beyond its points.
+    vtkErrorMacro(
+      "Cannot compute the SH transfer: the input " << malformed << "; the output keeps zeros.");
+    this->LastComputeSeconds = 0.0;
+    this->UpdateProgress(1.0);
+    return 1;
+  }
   if (pointCount == 0 || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
   {
     this->LastComputeSeconds = 0.0;

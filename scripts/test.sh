@@ -35,12 +35,16 @@ echo
 echo "The rendering tests (label gl) again with RF_TEST_MULTISAMPLES=0 (single-sampled windows):"
 RF_TEST_MULTISAMPLES=0 "${runner[@]}" ctest --output-on-failure -L gl "$@" 2>&1 | tee "$single_log"
 single_status=${PIPESTATUS[0]}
-# The unit, bad-input, stability, scene and composite tests again, built with AddressSanitizer
-# and UndefinedBehaviorSanitizer (the module, the tests and the C core; VTK and Mesa are not
-# instrumented): a malformed mesh must not make this project's code read or write out of
-# bounds or do anything undefined. Leak checks are off (VTK and Mesa keep allocations to exit);
-# any undefined behaviour aborts its test. Only the programs those tests run are built
-# (scripts/test-programs.py reads them from the test files CMake wrote).
+# The unit, bad-input, stability, scene and composite tests again, built by clang with
+# AddressSanitizer and UndefinedBehaviorSanitizer (the module, the reference filters, the
+# viewer's code, the tests and the C core; VTK and Mesa are not instrumented): a malformed
+# mesh or file must not make this project's code read or write out of bounds or do anything
+# undefined. Leak checks are off (VTK and Mesa keep allocations to exit); any undefined
+# behaviour aborts its test. The code also carries libFuzzer's coverage (fuzzer-no-link), so
+# that the bounded fuzz runs among them (label fuzz: the C core, meshes through the pass's
+# CPU-side code, files through the viewer's readers) are guided through all of it. Only the
+# programs those tests run are built (scripts/test-programs.py reads them from the test files
+# CMake wrote; the C core's fuzzer is a custom target of its own).
 sanitizer_labels="unit|badinput|stability|scene|composite"
 sanitizer_log=Testing/last-run-sanitizers.log
 echo
@@ -48,16 +52,28 @@ echo "The $sanitizer_labels tests again under AddressSanitizer and UndefinedBeha
 (
   set -euo pipefail
   cd ..
-  flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
-  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_FLAGS="$flags" \
-    -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
-    -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
-  mapfile -t targets < <(python3 scripts/test-programs.py build-asan "$sanitizer_labels" fuzz)
+  flags="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=undefined"
+  flags="$flags -fno-omit-frame-pointer"
+  # A folder configured by another compiler (an older gcc build-asan) is configured anew.
+  # C programs link the C++ part of UndefinedBehaviorSanitizer's runtime too, and the C++
+  # library it needs: the libraries they use are C++ (-fsanitize-link-c++-runtime, -lstdc++).
+  if [ -f build-asan/CMakeCache.txt ] &&
+    ! grep -q "^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++" build-asan/CMakeCache.txt; then
+    rm -rf build-asan
+  fi
+  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
+    -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" \
+    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined -fsanitize-link-c++-runtime" \
+    -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
+    -DCMAKE_C_STANDARD_LIBRARIES=-lstdc++ >/dev/null
+  mapfile -t targets < <(python3 scripts/test-programs.py build-asan "$sanitizer_labels" \
+    'badinput\.fuzz_core$')
   [ ${#targets[@]} -gt 0 ] || { echo "no tests labelled $sanitizer_labels" >&2; exit 1; }
+  targets+=(fuzz_core_libfuzzer)
   cd build-asan
   cmake --build . -j "$(nproc)" --target "${targets[@]}" >/dev/null
   ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 "${runner[@]}" \
-    ctest --output-on-failure -L "$sanitizer_labels" -E fuzz "$@"
+    ctest --output-on-failure -L "$sanitizer_labels" "$@"
 ) 2>&1 | tee "$sanitizer_log"
 sanitizer_status=${PIPESTATUS[0]}
 # The ParaView plugin, in ParaView itself (label paraview).

@@ -153,7 +153,7 @@ int NonFinitePoints(MessageLog* log, bool infinite)
   const Frame reference = Reference(nullptr);
   const std::string count = infinite ? "2 of " : "1 of ";
   if (CheckScene(log, rig, "error",
-        { subject->GetClassName(), Address(subject.Get()), count, "NaN or infinite",
+        { subject->GetClassName(), Address(subject.Get()), count, "NaN, infinite or too large",
           infinite ? "inf" : "nan" },
         reference) != EXIT_SUCCESS)
   {
@@ -163,7 +163,7 @@ int NonFinitePoints(MessageLog* log, bool infinite)
   poly->GetPoints()->Modified();
   rig.Render();
   rig.Render();
-  RF_REQUIRE(log->Count("error", { Address(subject.Get()), "NaN or infinite" }) == 2,
+  RF_REQUIRE(log->Count("error", { Address(subject.Get()), "NaN, infinite or too large" }) == 2,
     "the modified data was not checked again (or reported more than once)");
   // Repaired data is glass again.
   poly->GetPoints()->SetPoint(5, -1.2, 0.0, 0.7);

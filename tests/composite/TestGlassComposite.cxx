@@ -452,7 +452,7 @@ int BadBlock()
   scene.Renderer->AddActor(composite);
   auto picture = scene.Render();
   scene.Render();
-  const int nan = log->Count("error", { "block 3 of", "NaN or infinite" });
+  const int nan = log->Count("error", { "block 3 of", "NaN, infinite or too large" });
   std::printf("bad_block: %d error(s) naming block 3 and its NaN point\n", nan);
   RF_REQUIRE(nan == 1, "expected one error naming block 3's NaN point (got %d)", nan);
   // The wall is still drawn: its orange half shows where nothing else is.

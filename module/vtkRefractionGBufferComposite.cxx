@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 vtkStandardNewMacro(vtkRefractionGBufferComposite);
@@ -135,10 +136,15 @@ bool vtkRefractionGBufferComposite::Describe(vtkRefractionTargets* targets, cons
         plane.PixelBytes = 4;
         break;
       default:
+      {
+        // vtkErrorMacro's stream takes no manipulators (std::hex would print as "1").
+        char hex[16];
+        std::snprintf(hex, sizeof(hex), "0x%04X", static_cast<unsigned>(internal));
         vtkErrorMacro("Compositing across ranks: the target "
-          << vtkRefractionTargets::GetTargetName(target) << " has the internal format 0x"
-          << std::hex << internal << std::dec << ", which this class cannot transfer.");
+          << vtkRefractionTargets::GetTargetName(target) << " has the internal format " << hex
+          << ", which this class cannot transfer.");
         return false;
+      }
     }
     plane.Offset = offset;
     offset += static_cast<unsigned long long>(plane.PixelBytes) * count;

@@ -32,6 +32,8 @@
 #include "rf_validate.h"
 #include "vtk_glew.h"
 
+#include <cstdio>
+
 vtkStandardNewMacro(vtkRefractionPass);
 
 //------------------------------------------------------------------------------
@@ -537,8 +539,10 @@ void vtkRefractionPass::ReportGLError(const char* call)
   const std::string where(call);
   if (this->ReportedGLErrors.insert(where).second)
   {
-    vtkErrorMacro("OpenGL error " << vtkOpenGLStrError(code) << " (0x" << std::hex << code
-                                  << std::dec << ") in " << where
+    // vtkErrorMacro's stream takes no manipulators (std::hex would print as "1").
+    char hex[16];
+    std::snprintf(hex, sizeof(hex), "0x%04X", static_cast<unsigned>(code));
+    vtkErrorMacro("OpenGL error " << vtkOpenGLStrError(code) << " (" << hex << ") in " << where
                                   << "; reported once per call.");
   }
 }

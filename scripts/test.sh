@@ -55,17 +55,17 @@ echo "The $sanitizer_labels tests again under AddressSanitizer and UndefinedBeha
   flags="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=undefined"
   flags="$flags -fno-omit-frame-pointer"
   # A folder configured by another compiler (an older gcc build-asan) is configured anew.
-  # C programs link the C++ part of UndefinedBehaviorSanitizer's runtime too, and the C++
-  # library it needs: the libraries they use are C++ (-fsanitize-link-c++-runtime, -lstdc++).
   if [ -f build-asan/CMakeCache.txt ] &&
     ! grep -q "^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++" build-asan/CMakeCache.txt; then
     rm -rf build-asan
   fi
+  # C programs link the C++ part of UndefinedBehaviorSanitizer's runtime too, and the C++
+  # library it needs: the libraries they use are C++ (-fsanitize-link-c++-runtime, -lstdc++;
+  # in the linker flags, so that CMake's own check of the compiler links the same way).
   cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
     -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" \
-    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined -fsanitize-link-c++-runtime" \
-    -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
-    -DCMAKE_C_STANDARD_LIBRARIES=-lstdc++ >/dev/null
+    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined -fsanitize-link-c++-runtime -lstdc++" \
+    -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
   mapfile -t targets < <(python3 scripts/test-programs.py build-asan "$sanitizer_labels" \
     'badinput\.fuzz_core$')
   [ ${#targets[@]} -gt 0 ] || { echo "no tests labelled $sanitizer_labels" >&2; exit 1; }

@@ -202,7 +202,7 @@ int rfViewerParseOptions(int argc, char* argv[], const std::vector<std::string>&
     { "--background", "R,G,B[,R,G,B]", &o.Background, nullptr,
       "The renderer's background: r,g,b or a gradient r,g,b,r2,g2,b2 (bottom, top), 0..1." },
     { "--method", "NAME", &o.Method, nullptr,
-      "dir (default: two interfaces, Oliveira and Brauwers), sir (one interface), isr (Wyman's distance estimate), ssp (screen-space perturbation), peel (every interface of --layers depth-peeled layers: glass inside and behind glass, Chi, Wang and Hu)." },
+      "dir (default: two interfaces, Oliveira and Brauwers), sir (one interface), isr (Wyman's distance estimate), ssp (screen-space perturbation), peel (every interface of --layers depth-peeled layers: glass inside and behind glass, Chi, Wang and Hu). The pass's sixth method, sh (spherical harmonics), needs a vtkSHTransferFilter precomputation of a static mesh, which the viewer does not run (docs/methods.md says how to use it)." },
     { "--ior", "X", &o.IOR, nullptr,
       "Index of refraction of the glass, 0.1 to 10 (default 1.5)." },
     { "--dispersion", "R,G,B", &o.Dispersion, nullptr,
@@ -308,7 +308,10 @@ int rfViewerParseOptions(int argc, char* argv[], const std::vector<std::string>&
   const auto found = std::find(std::begin(methods), std::end(methods), method);
   if (found == std::end(methods))
   {
-    return rfViewerUsage("--method must be dir, sir, isr, ssp or peel, not " + rfViewerQuote(o.Method));
+    return rfViewerUsage("--method must be dir, sir, isr, ssp or peel, not " +
+      rfViewerQuote(o.Method) +
+      (method == "sh" ? " (sh needs a vtkSHTransferFilter precomputation the viewer does not run)"
+                      : ""));
   }
   s.Method = static_cast<int>(found - std::begin(methods));
   if (!ParseDouble(o.IOR, 0.1, 10.0, s.IOR))

@@ -20,7 +20,6 @@
 #endif
 
 #include <vtkActor.h>
-#include <vtkCellArray.h>
 #include <vtkMapper.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
@@ -30,13 +29,10 @@
 #include <vtkTexture.h>
 #include <vtksys/SystemTools.hxx>
 
-#include <cfloat>
-#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
-#include <unistd.h> // mkdtemp
 #include <vector>
 
 namespace

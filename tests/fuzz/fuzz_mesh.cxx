@@ -4,15 +4,16 @@
 // largest and smallest floats) or from a small grid (so that closed and open surfaces, shared
 // edges and folds happen), and cells of every kind (vertices, lines, polygons, strips, of
 // sizes 0 to 6) whose ids may name points that do not exist. The mesh goes, as glass, through
-//  - vtkRefractionGlassChecker::SplitProps (validation: ids in range, finite coordinates,
-//    empty data, no polygons), alone and across ranks;
+//  - vtkRefractionGlassChecker::SplitProps (validation: ids in range, cell sizes, finite
+//    coordinates within float range, empty data, no polygons), alone and across ranks;
 //  - vtkRefractionSurfaceModel (boundary edges, connected pieces, winding, open as a whole);
 //  - the reference module's filters a user runs on glass before rendering: vtkISRDistanceFilter
 //    (ISR's d_N) and vtkSHTransferFilter (the SH method's transfer), which must refuse what
 //    the checker refuses.
 // Contracts checked (a violation aborts; a crash is a finding): a prop the checker keeps as
-// glass has its cells' ids in range and finite points; a prop it refuses got a message; the
-// surface model's figures are sane (pieces >= sheet pieces >= 0, winding +-1, finite volume).
+// glass is well formed (fuzz_contract.h: ids in range, polygons and strips of 3 points or
+// more, coordinates within float range); a prop it refuses got a message; the surface
+// model's figures are sane (pieces >= sheet pieces >= 0, winding +-1, finite volume).
 // libFuzzer sees the branches of the module and the reference filters when the build
 // instruments all its code (scripts/test.sh's build-asan: clang, -fsanitize=fuzzer-no-link),
 // where this target is built with -fsanitize=fuzzer (tests/fuzz/CMakeLists.txt); without

@@ -19,6 +19,25 @@ std::string Lower(std::string text)
   return vtksys::SystemTools::LowerCase(text);
 }
 
+// The file from its start up to and including the first `marker` (the whole file without one),
+// at most `limit` bytes.
+std::string ReadUntil(std::ifstream& file, const std::string& marker, size_t limit)
+{
+  std::string text;
+  char chunk[65536];
+  while (text.size() < limit && file)
+  {
+    file.read(chunk, static_cast<std::streamsize>(std::min(sizeof(chunk), limit - text.size())));
+    const size_t from = text.size() > marker.size() ? text.size() - marker.size() : 0;
+    text.append(chunk, static_cast<size_t>(file.gcount()));
+    if (!marker.empty() && text.find(marker, from) != std::string::npos)
+    {
+      break;
+    }
+  }
+  return text;
+}
+
 // Every value a file holds takes at least one byte of it (ASCII: a digit; binary: a byte or
 // more), so `values` declared items fit only in a file of at least that many bytes.
 bool Fits(double values, double bytes, const std::string& what, std::string& error)
@@ -176,7 +195,8 @@ bool CheckPLY(const std::string& text, double bytes, std::string& error)
 
 // A binary STL (as VTK's reader decides: vtksys's file type detection) declares its
 // triangles' count after an 80-byte header; each takes 50 bytes.
-bool CheckBinarySTL(const std::string& path, const std::string& text, std::string& error)
+bool CheckBinarySTL(
+  const std::string& path, const std::string& text, double bytes, std::string& error)
 {
   if (vtksys::SystemTools::DetectFileType(path.c_str()) == vtksys::SystemTools::FileTypeText)
   {
@@ -191,7 +211,7 @@ bool CheckBinarySTL(const std::string& path, const std::string& text, std::strin
   const double triangles = static_cast<double>(static_cast<uint32_t>(count[0]) |
     static_cast<uint32_t>(count[1]) << 8 | static_cast<uint32_t>(count[2]) << 16 |
     static_cast<uint32_t>(count[3]) << 24);
-  return Fits(84.0 + 50.0 * triangles, static_cast<double>(text.size()),
+  return Fits(84.0 + 50.0 * triangles, bytes,
     "a binary STL of " + std::to_string(static_cast<long long>(triangles)) +
       " triangles (50 bytes each)",
     error);
@@ -268,11 +288,16 @@ bool rfCheckDeclaredSizes(const std::string& path, std::string& error)
     error = "it cannot be opened";
     return false;
   }
-  const std::string text{ std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>() };
-  const double bytes = static_cast<double>(text.size());
+  // Only as much as declares the sizes: a binary STL's header, a PLY header, an XML file up
+  // to its appended data (a large mesh's bulk); a legacy file declares sizes throughout.
+  const double bytes = static_cast<double>(vtksys::SystemTools::FileLength(path));
+  const std::string text = stl ? ReadUntil(file, "", 84)
+    : ply                      ? ReadUntil(file, "end_header", std::string::npos)
+    : xml                      ? ReadUntil(file, "<AppendedData", std::string::npos)
+                               : ReadUntil(file, "", std::string::npos);
   if (stl)
   {
-    return CheckBinarySTL(path, text, error);
+    return CheckBinarySTL(path, text, bytes, error);
   }
   return legacy ? CheckLegacy(text, bytes, error)
                 : ply ? CheckPLY(text, bytes, error) : CheckXML(text, bytes, error);

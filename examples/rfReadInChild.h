@@ -3,7 +3,9 @@
 // header says, ...) can crash them. The viewer runs each reader once in a child first, so such
 // a file is refused with a message and the viewer goes on; its checks of the declared sizes
 // (rfDeclaredSizes.h) refuse the files that would have the reader allocate too much. Found by
-// fuzzing the viewer's inputs (tests/fuzz/fuzz_files.cxx). POSIX only; elsewhere it reads
+// fuzzing the viewer's inputs (tests/fuzz/fuzz_files.cxx). The child runs VTK's parallel loops
+// in its one thread (the parent's thread pool is not forked); a child that stops using the
+// processor for 5 seconds is stopped and taken for a yes. POSIX only; elsewhere it reads
 // nothing and says yes.
 #ifndef rfReadInChild_h
 #define rfReadInChild_h

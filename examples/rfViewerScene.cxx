@@ -132,7 +132,12 @@ int BuildPipeline(const rfViewerOptions& o, const rfViewerSettings& s, Scene& sc
     {
       return rfViewerBadInput(reader->GetLastError());
     }
-    // Read the first file now, so that an unreadable input is reported before any window.
+    // Read the first file now, so that an unreadable input is reported before any window,
+    // once, in the viewer's words.
+    if (!reader->ReadFirstFile())
+    {
+      return rfViewerBadInput(reader->GetLastError());
+    }
     reader->UpdateInformation();
     if (!reader->GetLastError().empty())
     {

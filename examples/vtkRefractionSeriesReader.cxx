@@ -6,11 +6,13 @@
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
+#include <vtkCellTypes.h>
 #include <vtkDataArray.h>
 #include <vtkCommand.h>
 #include <vtkDataObject.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetReader.h>
+#include <vtkGenericCell.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -19,10 +21,12 @@
 #include <vtkObjectFactory.h>
 #include <vtkPLYReader.h>
 #include <vtkPolyData.h>
+#include <vtkRefractionGlassChecker.h>
 #include <vtkRectilinearGrid.h>
 #include <vtkSTLReader.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkStructuredGrid.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
@@ -46,38 +50,85 @@ vtkStandardNewMacro(vtkRefractionSeriesReader);
 
 namespace
 {
-// Whether every cell names points the data set has: a face "f 1 2 99" of an OBJ file over
-// three vertices is read as it stands, and every filter and mapper after it (normals, bounds,
-// the index buffer) would read or write beyond the points.
+// Whether VTK's filters can read every cell (a face "f 1 2 99" of an OBJ file over three
+// vertices, a polygon of no points, an offset beyond the connectivity are read as they
+// stand, and every filter and mapper after them would read beyond the arrays): polygonal
+// data as the glass checker checks it, an unstructured grid's cells against their types.
 bool CheckConnectivity(vtkDataSet* data, std::string& error)
 {
-  std::vector<std::pair<const char*, vtkCellArray*>> arrays;
   if (auto* poly = vtkPolyData::SafeDownCast(data))
   {
-    arrays = { { "vertex", poly->GetVerts() }, { "line", poly->GetLines() },
-      { "polygon", poly->GetPolys() }, { "triangle strip", poly->GetStrips() } };
+    return vtkRefractionGlassChecker::CheckCells(poly, error);
   }
-  else if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data))
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(data);
+  if (!grid || grid->GetNumberOfCells() == 0)
   {
-    arrays = { { "", grid->GetCells() } };
+    return true;
   }
-  const vtkIdType points = data->GetNumberOfPoints();
-  for (const auto& kind : arrays)
+  vtkCellArray* cells = grid->GetCells();
+  vtkUnsignedCharArray* types = grid->GetCellTypesArray();
+  const vtkIdType count = cells->GetNumberOfCells();
+  if (!types || types->GetNumberOfValues() != count)
   {
-    if (!kind.second || kind.second->GetNumberOfCells() == 0)
+    error = "has " + std::to_string(count) + " cells but " +
+      std::to_string(types ? types->GetNumberOfValues() : 0) + " cell types";
+    return false;
+  }
+  vtkDataArray* offsets = cells->GetOffsetsArray();
+  const vtkIdType length = cells->GetConnectivityArray()->GetNumberOfValues();
+  // The size of each type's cell, asked once per type: a cell of fixed size (a triangle, a
+  // hexahedron) is made with its points, one of any size (a polygon, a poly-line) with none;
+  // -1 for a type VTK does not know or whose faces the readers take as they stand (polyhedra).
+  vtkIdType fixedSizes[256];
+  std::fill(std::begin(fixedSizes), std::end(fixedSizes), -2);
+  vtkNew<vtkGenericCell> cell;
+  vtkIdType previous = static_cast<vtkIdType>(offsets->GetComponent(0, 0));
+  for (vtkIdType c = 0; c < count; ++c)
+  {
+    const vtkIdType next = static_cast<vtkIdType>(offsets->GetComponent(c + 1, 0));
+    const unsigned char type = types->GetValue(c);
+    if (previous < 0 || next < previous || next > length)
     {
-      continue;
-    }
-    double range[2];
-    kind.second->GetConnectivityArray()->GetRange(range, 0);
-    if (range[0] < 0.0 || range[1] >= static_cast<double>(points))
-    {
-      error = std::string("a ") + kind.first + (kind.first[0] ? " " : "") +
-        "cell names point (counting from 0) " +
-        std::to_string(static_cast<long long>(range[0] < 0.0 ? range[0] : range[1])) +
-        ", but there are " + std::to_string(points) + " points";
+      error = "has a cell (cell " + std::to_string(c) + ") of points " + std::to_string(previous) + " to " +
+        std::to_string(next - 1) + " of a connectivity of " + std::to_string(length);
       return false;
     }
+    if (fixedSizes[type] == -2)
+    {
+      const bool known = type != VTK_POLYHEDRON &&
+        std::string(vtkCellTypes::GetClassNameFromTypeId(type)) != "UnknownClass";
+      if (known)
+      {
+        cell->SetCellType(type);
+      }
+      fixedSizes[type] = known ? cell->GetNumberOfPoints() : -1;
+    }
+    const vtkIdType fixed = fixedSizes[type];
+    if (fixed < 0)
+    {
+      error = "has a cell (cell " + std::to_string(c) + ") of a type (" + std::to_string(type) +
+        ") this viewer does not read";
+      return false;
+    }
+    const vtkIdType least = type == VTK_EMPTY_CELL ? 0 : std::max<vtkIdType>(fixed, 1);
+    const vtkIdType size = next - previous;
+    if (size < least || (fixed > 0 && size != fixed))
+    {
+      error = "has a cell (cell " + std::to_string(c) + ", type " + std::to_string(type) + ") of " +
+        std::to_string(size) + " points, not " + std::to_string(fixed > 0 ? fixed : least) +
+        (fixed > 0 ? "" : " or more");
+      return false;
+    }
+    previous = next;
+  }
+  double range[2];
+  cells->GetConnectivityArray()->GetRange(range, 0);
+  if (length > 0 && (range[0] < 0.0 || range[1] >= static_cast<double>(grid->GetNumberOfPoints())))
+  {
+    error = "has a cell naming point (counting from 0) " +
+      std::to_string(static_cast<long long>(range[0] < 0.0 ? range[0] : range[1])) +
+      ", but there are " + std::to_string(grid->GetNumberOfPoints()) + " points";
+    return false;
   }
   return true;
 }
@@ -349,7 +400,7 @@ bool vtkRefractionSeriesReader::ReadIndex(size_t index)
   std::string broken;
   if (!CheckConnectivity(dataSet, broken))
   {
-    return this->Fail("cannot use '" + path + "': " + broken);
+    return this->Fail("cannot use '" + path + "': it " + broken);
   }
   this->Loaded = data;
   this->LoadedIndex = index;

@@ -47,6 +47,13 @@ public:
   const std::vector<std::string>& GetFiles() const { return this->Files; }
   const std::vector<double>& GetTimes() const { return this->Times; }
 
+  /**
+   * Reads the first file now: false (and GetLastError()) when it cannot be read or used.
+   * For programs that report a bad input with one message of their own before they build
+   * a pipeline (an update would also report it, through vtkErrorMacro and the executive).
+   */
+  bool ReadFirstFile() { return this->ReadIndex(0); }
+
   /** The last error message, empty when there was none. */
   const std::string& GetLastError() const { return this->LastError; }
 

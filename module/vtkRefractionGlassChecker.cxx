@@ -239,16 +239,19 @@ int vtkRefractionGlassChecker::CheckGlassProp(vtkProp* prop)
 }
 
 //------------------------------------------------------------------------------
-bool vtkRefractionGlassChecker::CheckMesh(vtkPolyData* poly, std::string& error)
+bool vtkRefractionGlassChecker::CheckCells(vtkPolyData* poly, std::string& error)
 {
-  // One scan per modification. A cell that names a point that does not exist would make every
-  // reader of the connectivity (the mapper's index buffer, the surface model) read beyond the
-  // points; NaN or infinite coordinates would reach the capture as NaN depths and normals,
-  // which the filtered normal texture spreads to the neighbours.
+  // Every reader of the connectivity (vtkPolyDataNormals' cell links, the mapper's index
+  // buffer, the surface model) trusts the offsets and the point ids: a polygon of no points
+  // makes VTK's cell map leave the cell without an array (vtkPolyDataNormals then reads
+  // through a null pointer), an offset beyond the connectivity or a missing point reads
+  // beyond the arrays.
   const vtkIdType points = poly->GetNumberOfPoints();
   vtkCellArray* kinds[4] = { poly->GetVerts(), poly->GetLines(), poly->GetPolys(),
     poly->GetStrips() };
   const char* kindNames[4] = { "vertex", "line", "polygon", "triangle strip" };
+  // A polygon or strip of fewer than 3 points bounds nothing, a line of one point is none.
+  const vtkIdType leastSizes[4] = { 1, 2, 3, 3 };
   for (int k = 0; k < 4; ++k)
   {
     vtkCellArray* cells = kinds[k];
@@ -256,24 +259,31 @@ bool vtkRefractionGlassChecker::CheckMesh(vtkPolyData* poly, std::string& error)
     {
       continue;
     }
-    if (k >= 2)
+    vtkDataArray* offsets = cells->GetOffsetsArray();
+    const vtkIdType length = cells->GetConnectivityArray()->GetNumberOfValues();
+    vtkIdType previous = static_cast<vtkIdType>(offsets->GetComponent(0, 0));
+    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
     {
-      // A polygon or strip of fewer than 3 points bounds nothing, and VTK's own filters on
-      // the way (vtkPolyDataNormals decomposing strips) read past such a cell.
-      vtkDataArray* offsets = cells->GetOffsetsArray();
-      for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
+      const vtkIdType next = static_cast<vtkIdType>(offsets->GetComponent(c + 1, 0));
+      const vtkIdType size = next - previous;
+      if (size < leastSizes[k] || previous < 0 || next > length)
       {
-        const vtkIdType size = static_cast<vtkIdType>(offsets->GetComponent(c + 1, 0)) -
-          static_cast<vtkIdType>(offsets->GetComponent(c, 0));
-        if (size < 3)
+        std::ostringstream text;
+        text << "has a " << kindNames[k] << " cell (cell " << c << " of its " << kindNames[k]
+             << "s) of ";
+        if (previous < 0 || next > length)
         {
-          std::ostringstream text;
-          text << "has a " << kindNames[k] << " cell (cell " << c << " of its "
-               << kindNames[k] << "s) of " << size << " points (at least 3)";
-          error = text.str();
-          return false;
+          text << "points " << previous << " to " << next - 1 << " of a connectivity of "
+               << length;
         }
+        else
+        {
+          text << size << " points (at least " << leastSizes[k] << ")";
+        }
+        error = text.str();
+        return false;
       }
+      previous = next;
     }
     double range[2];
     cells->GetConnectivityArray()->GetRange(range, 0);
@@ -287,6 +297,19 @@ bool vtkRefractionGlassChecker::CheckMesh(vtkPolyData* poly, std::string& error)
       return false;
     }
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionGlassChecker::CheckMesh(vtkPolyData* poly, std::string& error)
+{
+  // One scan per modification. NaN or infinite coordinates would reach the capture as NaN
+  // depths and normals, which the filtered normal texture spreads to the neighbours.
+  if (!CheckCells(poly, error))
+  {
+    return false;
+  }
+  const vtkIdType points = poly->GetNumberOfPoints();
   if (points == 0)
   {
     return true;

@@ -42,6 +42,11 @@ public:
   /// reference module's filters check before they read a glass mesh.
   static bool CheckMesh(vtkPolyData* poly, std::string& error);
 
+  /// The part of CheckMesh that keeps VTK's own filters from reading beyond the arrays:
+  /// offsets within the connectivity, points named by cells exist, vertices of 1 point or
+  /// more, lines 2, polygons and strips 3. What a reader checks before any filter runs.
+  static bool CheckCells(vtkPolyData* poly, std::string& error);
+
 protected:
   vtkRefractionGlassChecker() = default;
   ~vtkRefractionGlassChecker() override = default;

@@ -8,6 +8,9 @@
 //   wave_000k.vtp              4 contoured time steps of the wave equation, a numbered series
 //   broken.vtp                 not XML at all
 //   missing_point.obj          a face naming vertex 99 of 3 (f 1 2 99)
+//   empty_polygon.vtk,         a polygon of no points after a triangle (legacy VTK, PLY): VTK
+//   empty_polygon.ply          reads it, and vtkPolyDataNormals crashed on it
+//   short_tetra.vtk            an unstructured grid's tetrahedron of 2 points
 //   notes.xyz                  an unknown type
 #include "vtkMetaballsSource.h"
 #include "vtkWaveEquationSource.h"
@@ -150,7 +153,17 @@ int main(int argc, char* argv[])
   if (!WriteText(folder + "/blobs.pvd", collection) ||
     !WriteText(folder + "/broken.vtp", "this is not a VTK file\n") ||
     !WriteText(folder + "/notes.xyz", "1 2 3\n") ||
-    !WriteText(folder + "/missing_point.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n"))
+    !WriteText(folder + "/missing_point.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n") ||
+    !WriteText(folder + "/empty_polygon.vtk",
+      "# vtk DataFile Version 4.2\nempty polygon\nASCII\nDATASET POLYDATA\n"
+      "POINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 2 5\n3 0 1 2\n0\n") ||
+    !WriteText(folder + "/empty_polygon.ply",
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0\n") ||
+    !WriteText(folder + "/short_tetra.vtk",
+      "# vtk DataFile Version 4.2\nshort tetrahedron\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+      "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 3\n2 0 1\nCELL_TYPES 1\n10\n"))
   {
     return EXIT_FAILURE;
   }

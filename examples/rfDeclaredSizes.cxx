@@ -3,6 +3,7 @@
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
+#include <cstring>
 #include <cstdint>
 #include <fstream>
 #include <iterator>
@@ -79,7 +80,17 @@ bool CheckLegacy(const std::string& text, double bytes, std::string& error)
     {
       continue;
     }
-    const std::string key = vtksys::SystemTools::UpperCase(w[0]);
+    // VTK's legacy readers compare a keyword's first letters only ("POINTS4" is POINTS).
+    std::string key = vtksys::SystemTools::UpperCase(w[0]);
+    static const char* const keywords[] = { "POINTS", "POLYGONS", "LINES", "VERTICES",
+      "TRIANGLE_STRIPS", "CELLS", "CELL_TYPES", "POINT_DATA", "CELL_DATA", "DIMENSIONS" };
+    for (const char* keyword : keywords)
+    {
+      if (key.compare(0, std::strlen(keyword), keyword) == 0)
+      {
+        key = keyword;
+      }
+    }
     double values = -2.0;
     if (key == "POINTS")
     {

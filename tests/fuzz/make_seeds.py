@@ -194,7 +194,9 @@ FILE_SEEDS = {
 # the child); vtk_empty_polygon and ply_empty_face (a polygon of no points: vtkPolyDataNormals
 # read through a null pointer, found by CI's bounded run), with vtk_short_tetra,
 # vtk_offsets_beyond_connectivity and vtk_unknown_cell_type, the other cells VTK's filters
-# cannot read (the viewer now checks cells against their types and offsets).
+# cannot read (the viewer now checks cells against their types and offsets);
+# vtk_keyword_prefix_count ("POINTS4 400000000": VTK's legacy reader matches keywords by
+# their first letters, the declared-size check now does too).
 
 if __name__ == "__main__":
     for folder, seeds in (("corpus-mesh", MESH_SEEDS), ("corpus-files", FILE_SEEDS)):

@@ -11,6 +11,8 @@
 //   empty_polygon.vtk,         a polygon of no points after a triangle (legacy VTK, PLY): VTK
 //   empty_polygon.ply          reads it, and vtkPolyDataNormals crashed on it
 //   short_tetra.vtk            an unstructured grid's tetrahedron of 2 points
+//   points_prefix.vtk          "POINTS4 400000000 float": VTK reads the keyword by its first
+//                              letters and would allocate for the count
 //   notes.xyz                  an unknown type
 #include "vtkMetaballsSource.h"
 #include "vtkWaveEquationSource.h"
@@ -163,7 +165,10 @@ int main(int argc, char* argv[])
       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0\n") ||
     !WriteText(folder + "/short_tetra.vtk",
       "# vtk DataFile Version 4.2\nshort tetrahedron\nASCII\nDATASET UNSTRUCTURED_GRID\n"
-      "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 3\n2 0 1\nCELL_TYPES 1\n10\n"))
+      "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 3\n2 0 1\nCELL_TYPES 1\n10\n") ||
+    !WriteText(folder + "/points_prefix.vtk",
+      "# vtk DataFile Version 3.0\nprefix\nASCII\nDATASET POLYDATA\n"
+      "POINTS4 400000000 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 2\n"))
   {
     return EXIT_FAILURE;
   }

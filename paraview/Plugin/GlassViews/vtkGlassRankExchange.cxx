@@ -52,6 +52,7 @@ void vtkGlassRankExchange::AllReduceMax(int* values, int count)
     return;
   }
   std::vector<int> local(values, values + count);
+  ++this->AllReduces;
   controller->AllReduce(local.data(), values, count, vtkCommunicator::MAX_OP);
 }
 
@@ -61,6 +62,7 @@ double vtkGlassRankExchange::AllReduceMin(double value)
   double result = value;
   if (controller && controller->GetNumberOfProcesses() > 1)
   {
+    ++this->AllReduces;
     controller->AllReduce(&value, &result, 1, vtkCommunicator::MIN_OP);
   }
   return result;
@@ -72,6 +74,7 @@ double vtkGlassRankExchange::AllReduceMax(double value)
   double result = value;
   if (controller && controller->GetNumberOfProcesses() > 1)
   {
+    ++this->AllReduces;
     controller->AllReduce(&value, &result, 1, vtkCommunicator::MAX_OP);
   }
   return result;
@@ -84,6 +87,7 @@ bool vtkGlassRankExchange::Send(const unsigned char* data, unsigned long long by
   {
     return false;
   }
+  ++this->Sends;
   return controller->Send(reinterpret_cast<const char*>(data), static_cast<vtkIdType>(bytes), to,
            BufferTag) != 0;
 }
@@ -95,6 +99,7 @@ bool vtkGlassRankExchange::Receive(unsigned char* data, unsigned long long bytes
   {
     return false;
   }
+  ++this->Receives;
   return controller->Receive(reinterpret_cast<char*>(data), static_cast<vtkIdType>(bytes), from,
            BufferTag) != 0;
 }

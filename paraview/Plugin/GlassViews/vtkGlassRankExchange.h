@@ -39,6 +39,14 @@ public:
   /// The message tag of the G-buffers.
   static constexpr int BufferTag = 25025;
 
+  /// All-reduces, sends and receives since the last ResetCounts(): every rank of a frame
+  /// must make the same all-reduces, or the next collective on the controller (ParaView's or
+  /// IceT's) pairs with the wrong call. vtkGlassRenderView logs them each frame.
+  int GetAllReduceCount() const { return this->AllReduces; }
+  int GetSendCount() const { return this->Sends; }
+  int GetReceiveCount() const { return this->Receives; }
+  void ResetCounts() { this->AllReduces = this->Sends = this->Receives = 0; }
+
 protected:
   vtkGlassRankExchange();
   ~vtkGlassRankExchange() override;
@@ -48,6 +56,9 @@ private:
   void operator=(const vtkGlassRankExchange&) = delete;
 
   vtkSmartPointer<vtkMultiProcessController> Controller;
+  int AllReduces = 0;
+  int Sends = 0;
+  int Receives = 0;
 };
 
 #endif

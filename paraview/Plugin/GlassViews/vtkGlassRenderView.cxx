@@ -7,6 +7,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpaquePass.h"
 #include "vtkOpenGLFXAAPass.h"
+#include "vtkPVLogger.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkRefractionPass.h"
 #include "vtkRenderStepsPass.h"
@@ -80,6 +81,16 @@ void vtkGlassRenderView::AboutToRenderOnLocalProcess(bool interactive)
   }
   this->ConfigureDelegate();
 
+  // With PARAVIEW_LOG_RENDERING_VERBOSITY=INFO, each rank's frames and its exchange's calls
+  // in the frame before: a rank whose counts differ from the others' is where a hang began.
+  vtkVLogF(PARAVIEW_LOG_RENDERING_VERBOSITY(),
+    "glass: across ranks %d (synchronized %d, replicated %d, ranks %d); the last frame's "
+    "exchange: %d all-reduces, %d sends, %d receives",
+    acrossRanks ? 1 : 0, this->SynchronizedRenderers->GetEnabled() ? 1 : 0,
+    this->SynchronizedRenderers->GetDataReplicatedOnAllProcesses() ? 1 : 0,
+    this->RankExchange->GetNumberOfRanks(), this->RankExchange->GetAllReduceCount(),
+    this->RankExchange->GetSendCount(), this->RankExchange->GetReceiveCount());
+  this->RankExchange->ResetCounts();
   this->GlassPass->SetRankExchange(acrossRanks ? this->RankExchange.GetPointer() : nullptr);
   this->CompositeRanks = acrossRanks ? this->RankExchange->GetNumberOfRanks() : 1;
   this->GlassPass->SetUseCompositingBackground(acrossRanks);

@@ -89,8 +89,9 @@ bool CheckConnectivity(vtkDataSet* data, std::string& error)
     const unsigned char type = types->GetValue(c);
     if (previous < 0 || next < previous || next > length)
     {
-      error = "has a cell (cell " + std::to_string(c) + ") of points " + std::to_string(previous) + " to " +
-        std::to_string(next - 1) + " of a connectivity of " + std::to_string(length);
+      error = "has a cell (cell " + std::to_string(c) + ") of points " +
+        std::to_string(previous) + " to " + std::to_string(next - 1) + " of a connectivity of " +
+        std::to_string(length);
       return false;
     }
     if (fixedSizes[type] == -2)
@@ -123,7 +124,8 @@ bool CheckConnectivity(vtkDataSet* data, std::string& error)
   }
   double range[2];
   cells->GetConnectivityArray()->GetRange(range, 0);
-  if (length > 0 && (range[0] < 0.0 || range[1] >= static_cast<double>(grid->GetNumberOfPoints())))
+  const double points = static_cast<double>(grid->GetNumberOfPoints());
+  if (length > 0 && (range[0] < 0.0 || range[1] >= points))
   {
     error = "has a cell naming point (counting from 0) " +
       std::to_string(static_cast<long long>(range[0] < 0.0 ? range[0] : range[1])) +

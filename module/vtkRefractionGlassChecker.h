@@ -4,8 +4,9 @@
  *
  * A glass prop with a bad index of refraction (set on the keys by hand) or without polygons
  * is drawn as an ordinary actor; one with an empty vtkPolyData, NaN/infinite points (or
- * beyond float range), cells naming missing points or polygons of fewer than 3 points is not
- * drawn. Each verdict is reported once, with the prop and the value, and kept until the
+ * beyond float range), cells naming missing points, offsets beyond the connectivity, or cells
+ * too small for their kind (polygons and strips under 3 points, lines under 2, empty
+ * vertices) is not drawn. Each verdict is reported once, with the prop and the value, and kept until the
  * prop's index or data change, so a static scene scans no points and repeats no message.
  */
 #ifndef vtkRefractionGlassChecker_h
@@ -37,9 +38,9 @@ public:
   void SplitProps(const vtkRenderState* s, std::vector<vtkProp*>& glass,
     std::vector<vtkProp*>* others, bool acrossRanks = false);
 
-  /// Points named by cells exist, polygons and strips have 3 points or more, coordinates are
-  /// finite and within float range; else false and why in `error` ("has ..."). Also what the
-  /// reference module's filters check before they read a glass mesh.
+  /// The cells as CheckCells checks them, and coordinates finite and within float range; else
+  /// false and why in `error` ("has ..."). Also what the reference module's filters check
+  /// before they read a glass mesh.
   static bool CheckMesh(vtkPolyData* poly, std::string& error);
 
   /// The part of CheckMesh that keeps VTK's own filters from reading beyond the arrays:

@@ -121,6 +121,23 @@ inline vtkSmartPointer<vtkPolyData> ConePoly(
   return Detach(cone->GetOutput());
 }
 
+/// A renderer drawing through the glass pass under the built-in sky (what the baselines and
+/// closed forms show; no environment file to find), in a window of its own.
+struct GlassView
+{
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRefractionPass> Glass;
+  vtkSmartPointer<vtkRenderWindow> Window;
+
+  GlassView(int width, int height)
+  {
+    this->Glass->SetEnvironmentModeToBuiltin();
+    this->Renderer->SetPass(this->Glass);
+    this->Window = MakeWindow(this->Renderer, width, height);
+  }
+  vtkSmartPointer<vtkImageData> RenderAndGrab();
+};
+
 //------------------------------------------------------------------------------
 // Actors. Scalars off: every test colours through the property or the glass alone.
 inline vtkSmartPointer<vtkActor> ActorFor(vtkPolyData* poly)
@@ -165,11 +182,17 @@ inline void WithoutHighlights(vtkProp* prop)
   }
 }
 
+/// Marks a prop as glass of index `ior`, refraction alone (WithoutHighlights).
+inline void MakeRefractingGlass(vtkProp* prop, double ior)
+{
+  vtkRefractionPass::MakeGlass(prop, ior);
+  WithoutHighlights(prop);
+}
+
 inline vtkSmartPointer<vtkActor> GlassActor(vtkPolyData* poly, double ior)
 {
   auto actor = ActorFor(poly);
-  vtkRefractionPass::MakeGlass(actor, ior);
-  WithoutHighlights(actor);
+  MakeRefractingGlass(actor, ior);
   return actor;
 }
 
@@ -215,6 +238,12 @@ inline vtkSmartPointer<vtkImageData> Grab(vtkRenderWindow* window)
 
 // An 8-bit picture's colour as floats in [0, 1], 3 per pixel, bottom row first (the layout
 // of the reference's "Colour" and of rf_metrics).
+inline vtkSmartPointer<vtkImageData> GlassView::RenderAndGrab()
+{
+  this->Window->Render();
+  return Grab(this->Window);
+}
+
 inline std::vector<float> ToColour(vtkImageData* image)
 {
   vtkDataArray* scalars = image->GetPointData()->GetScalars();

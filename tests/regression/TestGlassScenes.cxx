@@ -28,43 +28,31 @@ int Finish(int argc, char* argv[], vtkRenderWindow* window)
 
 int SphereCase(int argc, char* argv[], bool sir)
 {
-  vtkNew<vtkRenderer> renderer;
+  rftest::GlassView view(kSize, kSize);
   auto sphere = rftest::MakeSphere(1.0, 64);
-  vtkRefractionPass::MakeGlass(sphere, 1.5);
-  rftest::WithoutHighlights(sphere);
-  renderer->AddActor(sphere);
-  vtkNew<vtkRefractionPass> glass;
-  glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
-  renderer->SetPass(glass);
-  auto window = rftest::MakeWindow(renderer, kSize, kSize);
-  rftest::LookAtOrigin(renderer, 5.0, 15.0);
-  window->Render();
-  RF_REQUIRE(glass->GetNumberOfGlassProps() == 1, "the sphere is not drawn as glass");
-  auto dir = rftest::Grab(window);
-  glass->SetMethod(vtkRefractionPass::SIR);
-  window->Render();
-  auto singleInterface = rftest::Grab(window);
+  rftest::MakeRefractingGlass(sphere, 1.5);
+  view.Renderer->AddActor(sphere);
+  rftest::LookAtOrigin(view.Renderer, 5.0, 15.0);
+  auto dir = view.RenderAndGrab();
+  RF_REQUIRE(view.Glass->GetNumberOfGlassProps() == 1, "the sphere is not drawn as glass");
+  view.Glass->SetMethod(vtkRefractionPass::SIR);
+  auto singleInterface = view.RenderAndGrab();
   const double error = rftest::ImageError(dir, singleInterface);
   std::printf("VTK image error between DIR and SIR: %g\n", error);
   RF_REQUIRE(error > 50.0 * kThreshold, "SIR and DIR give the same picture (error %g)", error);
-  glass->SetMethod(sir ? vtkRefractionPass::SIR : vtkRefractionPass::DIR);
-  return Finish(argc, argv, window);
+  view.Glass->SetMethod(sir ? vtkRefractionPass::SIR : vtkRefractionPass::DIR);
+  return Finish(argc, argv, view.Window);
 }
 
 int TorusCase(int argc, char* argv[])
 {
-  vtkNew<vtkRenderer> renderer;
+  rftest::GlassView view(kSize, kSize);
   auto torus = rftest::MakeTorus();
   torus->RotateX(60.0);
-  vtkRefractionPass::MakeGlass(torus, 1.33);
-  rftest::WithoutHighlights(torus);
-  renderer->AddActor(torus);
-  vtkNew<vtkRefractionPass> glass;
-  glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
-  renderer->SetPass(glass);
-  auto window = rftest::MakeWindow(renderer, kSize, kSize);
-  rftest::LookAtOrigin(renderer, 4.5, 10.0);
-  return Finish(argc, argv, window);
+  rftest::MakeRefractingGlass(torus, 1.33);
+  view.Renderer->AddActor(torus);
+  rftest::LookAtOrigin(view.Renderer, 4.5, 10.0);
+  return Finish(argc, argv, view.Window);
 }
 
 int IsosurfaceCase(int argc, char* argv[])
@@ -76,35 +64,28 @@ int IsosurfaceCase(int argc, char* argv[])
   surface->SetValue(0, blobs->GetIsoValue());
   surface->ComputeNormalsOn();
   auto actor = rftest::ActorFor(surface->GetOutputPort());
-  vtkRefractionPass::MakeGlass(actor, 1.5);
-  rftest::WithoutHighlights(actor);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  vtkNew<vtkRefractionPass> glass;
-  glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
-  renderer->SetPass(glass);
-  auto window = rftest::MakeWindow(renderer, kSize, kSize);
+  rftest::MakeRefractingGlass(actor, 1.5);
+  rftest::GlassView view(kSize, kSize);
+  view.Renderer->AddActor(actor);
   surface->UpdateTimeStep(0.0);
-  rftest::LookAtOrigin(renderer, 5.5, 20.0);
-  window->Render();
-  auto first = rftest::Grab(window);
+  rftest::LookAtOrigin(view.Renderer, 5.5, 20.0);
+  auto first = view.RenderAndGrab();
   surface->UpdateTimeStep(0.3 * blobs->GetTimePeriod());
-  window->Render();
-  auto second = rftest::Grab(window);
+  auto second = view.RenderAndGrab();
   const double error = rftest::ImageError(first, second);
   std::printf("VTK image error between time 0 and time 0.3: %g\n", error);
   RF_REQUIRE(error > 50.0 * kThreshold, "the isosurface did not change with time (%g)", error);
-  return Finish(argc, argv, window);
+  return Finish(argc, argv, view.Window);
 }
 
 // An opaque cube in front of the glass hides it; an opaque cone behind it is hidden by it.
 // Both are unlit and pure-coloured, so their pixels are known exactly.
 int OpaqueOrderCase(int argc, char* argv[])
 {
-  vtkNew<vtkRenderer> renderer;
+  rftest::GlassView view(kSize, kSize);
+  vtkRenderer* renderer = view.Renderer;
   auto sphere = rftest::MakeSphere(1.0, 64);
-  vtkRefractionPass::MakeGlass(sphere, 1.5);
-  rftest::WithoutHighlights(sphere);
+  rftest::MakeRefractingGlass(sphere, 1.5);
   const double cubeCentre[3] = { 0.6, 0.0, 1.5 };
   const double cubeSize[3] = { 0.4, 0.4, 0.4 };
   auto front = rftest::FlatActor(rftest::BoxPoly(cubeSize, cubeCentre), 0.0, 1.0, 0.0);
@@ -113,13 +94,8 @@ int OpaqueOrderCase(int argc, char* argv[])
   renderer->AddActor(sphere);
   renderer->AddActor(front);
   renderer->AddActor(back);
-  vtkNew<vtkRefractionPass> glass;
-  glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
-  renderer->SetPass(glass);
-  auto window = rftest::MakeWindow(renderer, kSize, kSize);
   rftest::LookAtOrigin(renderer, 6.0, 0.0);
-  window->Render();
-  auto image = rftest::Grab(window);
+  auto image = view.RenderAndGrab();
 
   // Project the cube's centre and the point of the cone straight behind the sphere's centre.
   auto pixelOf = [&](double x, double y, double z, int& px, int& py) {
@@ -155,7 +131,7 @@ int OpaqueOrderCase(int argc, char* argv[])
     }
   }
   RF_REQUIRE(coneVisible, "the opaque cone is not drawn at all");
-  return Finish(argc, argv, window);
+  return Finish(argc, argv, view.Window);
 }
 
 // Screen-space perturbation (Sousa): the glass refracts the opaque scene behind it. An
@@ -163,10 +139,9 @@ int OpaqueOrderCase(int argc, char* argv[])
 // chapter's mask); with the mask off it does, which shows that the check can fail.
 int SSPCase(int argc, char* argv[])
 {
-  vtkNew<vtkRenderer> renderer;
+  rftest::GlassView view(kSize, kSize);
   auto sphere = rftest::MakeSphere(1.0, 64);
-  vtkRefractionPass::MakeGlass(sphere, 1.5);
-  rftest::WithoutHighlights(sphere);
+  rftest::MakeRefractingGlass(sphere, 1.5);
   const double cubeCentre[3] = { 0.75, 0.0, 1.5 };
   const double cubeSize[3] = { 0.5, 0.5, 0.2 };
   auto front = rftest::FlatActor(rftest::BoxPoly(cubeSize, cubeCentre), 0.0, 1.0, 0.0);
@@ -174,21 +149,17 @@ int SSPCase(int argc, char* argv[])
   const double wallSize[3] = { 6.0, 0.8, 0.1 };
   auto back = rftest::ActorFor(rftest::BoxPoly(wallSize, wallCentre));
   back->GetProperty()->SetColor(0.2, 0.3, 0.9);
-  renderer->AddActor(sphere);
-  renderer->AddActor(front);
-  renderer->AddActor(back);
-  vtkNew<vtkRefractionPass> glass;
-  glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
+  view.Renderer->AddActor(sphere);
+  view.Renderer->AddActor(front);
+  view.Renderer->AddActor(back);
+  vtkRefractionPass* glass = view.Glass;
   glass->SetMethod(vtkRefractionPass::SSP);
   glass->SetSSPStrength(0.2);
-  renderer->SetPass(glass);
-  auto window = rftest::MakeWindow(renderer, kSize, kSize);
-  rftest::LookAtOrigin(renderer, 6.0, 0.0);
+  rftest::LookAtOrigin(view.Renderer, 6.0, 0.0);
 
   // Where the cube itself is drawn: the scene without the glass.
   sphere->VisibilityOff();
-  window->Render();
-  auto cubeOnly = rftest::Grab(window);
+  auto cubeOnly = view.RenderAndGrab();
   sphere->VisibilityOn();
   auto green = [](vtkImageData* image, int x, int y) {
     const double r = image->GetScalarComponentAsDouble(x, y, 0, 0);
@@ -214,24 +185,22 @@ int SSPCase(int argc, char* argv[])
     return leaks;
   };
   glass->SSPRefractionMaskOff();
-  window->Render();
-  auto unmasked = rftest::Grab(window);
-  const int unmaskedLeaks = countLeaks(unmasked);
+  const int unmaskedLeaks = countLeaks(view.RenderAndGrab());
   glass->SSPRefractionMaskOn();
-  window->Render();
-  auto masked = rftest::Grab(window);
+  auto masked = view.RenderAndGrab();
   const int maskedLeaks = countLeaks(masked);
   std::printf("green pixels of the front cube inside the glass: %d with the refraction mask, "
               "%d without\n", maskedLeaks, unmaskedLeaks);
   RF_REQUIRE(unmaskedLeaks > 20, "the leak check does not see the unmasked leak (%d)", unmaskedLeaks);
   RF_REQUIRE(maskedLeaks == 0, "the front cube leaks into the refraction (%d pixels)", maskedLeaks);
-  return Finish(argc, argv, window);
+  return Finish(argc, argv, view.Window);
 }
 
 // Image-space refraction (Wyman) with d_N from vtkISRDistanceFilter.
 int ISRCase(int argc, char* argv[], bool torus)
 {
-  vtkNew<vtkRenderer> renderer;
+  rftest::GlassView view(kSize, kSize);
+  vtkRenderer* renderer = view.Renderer;
   auto shape = torus ? rftest::MakeTorus() : rftest::MakeSphere(1.0, 64);
   vtkNew<vtkISRDistanceFilter> distances;
   distances->SetInputConnection(shape->GetMapper()->GetInputConnection(0, 0));
@@ -240,28 +209,19 @@ int ISRCase(int argc, char* argv[], bool torus)
   {
     actor->RotateX(60.0);
   }
-  vtkRefractionPass::MakeGlass(actor, torus ? 1.33 : 1.5);
-  rftest::WithoutHighlights(actor);
+  rftest::MakeRefractingGlass(actor, torus ? 1.33 : 1.5);
   renderer->AddActor(actor);
-  vtkNew<vtkRefractionPass> glass;
-  glass->SetEnvironmentModeToBuiltin(); // the baselines show the built-in sky
-  renderer->SetPass(glass);
-  auto window = rftest::MakeWindow(renderer, kSize, kSize);
   rftest::LookAtOrigin(renderer, torus ? 4.5 : 5.0, torus ? 10.0 : 15.0);
-  window->Render();
-  auto dir = rftest::Grab(window);
-  glass->SetMethod(vtkRefractionPass::ISR);
+  auto dir = view.RenderAndGrab();
+  view.Glass->SetMethod(vtkRefractionPass::ISR);
   // Without d_N (the shape's own mapper has no such array) ISR falls back to d_N = d_V.
   renderer->RemoveActor(actor);
   renderer->AddActor(shape);
-  vtkRefractionPass::MakeGlass(shape, vtkRefractionPass::GetIndexOfRefraction(actor));
-  rftest::WithoutHighlights(shape);
-  window->Render();
-  auto withoutDistances = rftest::Grab(window);
+  rftest::MakeRefractingGlass(shape, vtkRefractionPass::GetIndexOfRefraction(actor));
+  auto withoutDistances = view.RenderAndGrab();
   renderer->RemoveActor(shape);
   renderer->AddActor(actor);
-  window->Render();
-  auto isr = rftest::Grab(window);
+  auto isr = view.RenderAndGrab();
   const double fromDir = rftest::ImageError(dir, isr);
   const int differing = rftest::DifferingPixels(dir, isr, 2);
   const double fromFallback = rftest::ImageError(isr, withoutDistances);
@@ -274,7 +234,7 @@ int ISRCase(int argc, char* argv[], bool torus)
   RF_REQUIRE(fromDir > kThreshold && differing > kSize * kSize / 50,
     "ISR draws DIR's picture (VTK image error %g, %d pixels differ)", fromDir, differing);
   RF_REQUIRE(fromFallback > kThreshold, "d_N makes no difference to ISR (%g)", fromFallback);
-  return Finish(argc, argv, window);
+  return Finish(argc, argv, view.Window);
 }
 
 // A renderer with the pass and no glass draws exactly what plain VTK draws.
@@ -299,8 +259,7 @@ int PassThroughCase(int argc, char* argv[])
   const int worst = rftest::MaxChannelDifference(plain, withPass);
   RF_REQUIRE(worst == 0, "the pass changes a scene without glass (max difference %d)", worst);
   // Marking then unmarking an actor returns it to plain rendering.
-  vtkRefractionPass::MakeGlass(sphere, 1.5);
-  rftest::WithoutHighlights(sphere);
+  rftest::MakeRefractingGlass(sphere, 1.5);
   window->Render();
   auto glassImage = rftest::Grab(window);
   RF_REQUIRE(rftest::MaxChannelDifference(plain, glassImage) > 32, "the sphere did not turn to glass");

@@ -49,10 +49,25 @@ inline double AngleDegrees(rf_vec3 a, rf_vec3 b)
     3.14159265358979323846;
 }
 
-/// Refraction into the glass at P1 with the outward normal `outward`; false on TIR.
-inline bool Enter(rf_vec3 d, rf_vec3 outward, double ior, rf_vec3& t1)
+/// Refraction into the glass at t.P1 with the outward normal t.N1. On TIR (ior < 1) the
+/// trace ends there: flag 3, leaving along the mirror direction; returns false.
+inline bool Enter(rf_vec3 d, Trace& t, double ior, rf_vec3& t1)
 {
-  return rf_refract(d, outward, 1.0 / ior, &t1) == RF_OK;
+  if (rf_refract(d, t.N1, 1.0 / ior, &t1) == RF_OK)
+  {
+    return true;
+  }
+  t.Flag = 3;
+  t.P2 = t.P1;
+  t.T2 = rf_reflect(d, t.N1);
+  return false;
+}
+
+/// The distance from the centre c to the line of sight along the unit direction d.
+inline double ImpactParameter(rf_vec3 d, rf_vec3 c)
+{
+  const double along = rf_vec3_dot(d, c);
+  return std::sqrt(std::max(0.0, rf_vec3_dot(c, c) - along * along));
 }
 
 /// The ray along the unit direction d through a sphere (view-space centre c, radius r).
@@ -69,11 +84,8 @@ inline Trace ThroughSphere(rf_vec3 d, rf_vec3 c, double r, double ior)
   t.P1 = rf_vec3_scale(d, b - std::sqrt(disc));
   t.N1 = rf_vec3_scale(rf_vec3_sub(t.P1, c), 1.0 / r);
   rf_vec3 t1;
-  if (!Enter(d, t.N1, ior, t1))
+  if (!Enter(d, t, ior, t1))
   {
-    t.Flag = 3;
-    t.P2 = t.P1;
-    t.T2 = rf_reflect(d, t.N1);
     return t;
   }
   // The chord of a sphere along t1 from P1 has length 2 r cos(theta_t).
@@ -146,11 +158,8 @@ inline Trace ThroughBox(rf_vec3 d, const Box& box, double ior)
   t.P1 = rf_vec3_scale(d, tNear);
   t.N1 = outward(nearFace);
   rf_vec3 t1;
-  if (!Enter(d, t.N1, ior, t1))
+  if (!Enter(d, t, ior, t1))
   {
-    t.Flag = 3;
-    t.P2 = t.P1;
-    t.T2 = rf_reflect(d, t.N1);
     return t;
   }
   // Exit: the nearest slab plane ahead of P1 along t1, from inside.
@@ -241,6 +250,13 @@ struct Row
   int FlagChangeBound = 0;
   std::vector<std::string> Failures;
 
+  Row() = default;
+  Row(const char* name, const char* measure, const char* perturbation)
+    : Case(name)
+    , Measure(measure)
+    , Perturbation(perturbation)
+  {
+  }
   bool Passed() const { return this->Failures.empty(); }
   void Require(bool ok, const std::string& what)
   {

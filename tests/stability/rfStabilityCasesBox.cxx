@@ -12,19 +12,11 @@ namespace
 // Box scenes: the closed form is the ray through a convex box (rfstab::ThroughBox), exact for
 // flat faces. Compared on pixels whose ray and whose 8 neighbours' rays enter and leave by the
 // same faces (the pass's normals are filtered across face edges).
-struct BoxScene
+struct BoxScene : View
 {
   double Centre[3] = { 0.0, 0.0, 0.0 };
   double Axis[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
   double Length[3] = { 1.0, 1.0, 1.0 };
-  double Eye[3] = { 0.0, 0.0, 4.0 };
-  double Focal[3] = { 0.0, 0.0, 0.0 };
-  double Up[3] = { 0.0, 1.0, 0.0 };
-  double ViewAngle = 40.0;
-  double Near = 1.0;
-  double Far = 10.0;
-  int Width = 96;
-  int Height = 96;
   double IOR = 1.5;
 };
 
@@ -54,14 +46,7 @@ Run RunBox(const BoxScene& sc)
     scene.Placement->SetElement(r, 3, sc.Centre[r]);
   }
   scene.IOR = sc.IOR;
-  std::copy(sc.Eye, sc.Eye + 3, scene.Eye);
-  std::copy(sc.Focal, sc.Focal + 3, scene.Focal);
-  std::copy(sc.Up, sc.Up + 3, scene.Up);
-  scene.ViewAngle = sc.ViewAngle;
-  scene.Near = sc.Near;
-  scene.Far = sc.Far;
-  scene.Width = sc.Width;
-  scene.Height = sc.Height;
+  static_cast<View&>(scene) = sc;
   return RunScene(scene);
 }
 
@@ -125,10 +110,7 @@ BoxMeasure MeasureBox(Rig& rig, const Frame& f, const BoxScene& sc,
 
 Row CaseFlatSlab(const char* name)
 {
-  Row row;
-  row.Case = name;
-  row.Measure = "T2 angle vs closed form (slab: T2 = V), interior (deg)";
-  row.Perturbation = "geometry x (1 + 1e-6)";
+  Row row(name, "T2 angle vs closed form (slab: T2 = V), interior (deg)", kGeometryPerturbation);
   BoxScene sc;
   sc.Length[0] = 2.0;
   sc.Length[1] = 2.0;
@@ -137,21 +119,16 @@ Row CaseFlatSlab(const char* name)
   const BoxMeasure m = MeasureBox(*run.R, run.Base, sc);
   std::printf("flat_slab: %d interior pixels, T2 error max %.3g deg, mean %.3g deg\n", m.Compared,
     m.Max, m.Mean);
-  row.Error = m.Max;
+  row.Require(m.Compared > 1000, "too few interior pixels");
   // Flat faces: the exact back normal is in the texture; what remains is float rounding
   // (0.06 deg with half-float normals).
-  row.ErrorBound = 0.1;
-  row.Require(m.Compared > 1000, "too few interior pixels");
-  FillCommon(row, run.Base, run.Smooth, run.Perturbed, 0);
+  FillCommon(row, run, m.Max, 0.1, 0);
   return row;
 }
 
 Row CaseGrazing(const char* name)
 {
-  Row row;
-  row.Case = name;
-  row.Measure = "T2 angle vs closed form, abs(N.V) < 0.1, interior (deg)";
-  row.Perturbation = "geometry x (1 + 1e-6)";
+  Row row(name, "T2 angle vs closed form, abs(N.V) < 0.1, interior (deg)", kGeometryPerturbation);
   // A long slab seen almost edge-on: its top face is met at 84-89.6 degrees of incidence.
   BoxScene sc;
   sc.Length[0] = 3.0;
@@ -180,21 +157,16 @@ Row CaseGrazing(const char* name)
   std::printf("grazing_view: %d interior top-face pixels, |N.V| down to %.4f; T2 error max %.3g "
               "deg, mean %.3g deg\n",
     m.Compared, smallest, m.Max, m.Mean);
-  row.Error = m.Max;
-  // Parallel top and bottom faces: T2 = V exactly when the exit is the bottom face.
-  row.ErrorBound = 0.1;
   row.Require(m.Compared > 200, "too few grazing pixels");
   row.Require(smallest < 0.02, "the view is not grazing");
-  FillCommon(row, run.Base, run.Smooth, run.Perturbed, 2);
+  // Parallel top and bottom faces: T2 = V exactly when the exit is the bottom face.
+  FillCommon(row, run, m.Max, 0.1, 2);
   return row;
 }
 
 Row CaseT1ParallelToImage(const char* name)
 {
-  Row row;
-  row.Case = name;
-  row.Measure = "T2 angle vs closed form, abs(T1.z) < 0.05, interior (deg)";
-  row.Perturbation = "geometry x (1 + 1e-6)";
+  Row row(name, "T2 angle vs closed form, abs(T1.z) < 0.05, interior (deg)", kGeometryPerturbation);
   // A slab far off-axis (156 degree view angle) whose front face refracts the central ray to
   // T1 = (1, 0, 0): T1.z crosses 0 over the slab, S and E of eq. 3-4 go to infinity.
   const double psiV = 65.26 * kPi / 180.0;
@@ -244,13 +216,11 @@ Row CaseT1ParallelToImage(const char* name)
   std::printf("t1z_parallel: %d interior pixels with |T1.z| < 0.05 (down to %.2g); T2 error max "
               "%.3g deg, mean %.3g deg\n",
     m.Compared, smallest, m.Max, m.Mean);
-  row.Error = m.Max;
-  // Parallel faces: T2 = V. Where T1 runs parallel to the image plane the exit is taken behind
-  // the entry point; on this slab that is the same back face.
-  row.ErrorBound = 0.1;
   row.Require(m.Compared > 20, "too few pixels with T1.z near 0");
   row.Require(smallest < 0.005, "T1.z does not come near 0");
-  FillCommon(row, run.Base, run.Smooth, run.Perturbed, 2);
+  // Parallel faces: T2 = V. Where T1 runs parallel to the image plane the exit is taken behind
+  // the entry point; on this slab that is the same back face.
+  FillCommon(row, run, m.Max, 0.1, 2);
   return row;
 }
 }

@@ -24,10 +24,7 @@ SphereScene IORScene(double ior)
 
 Row CaseIORExactlyOne(const char* name)
 {
-  Row row;
-  row.Case = name;
-  row.Measure = "colour vs environment along V (IOR 1 is no interface)";
-  row.Perturbation = "IOR x (1 + 1e-6)";
+  Row row(name, "colour vs environment along V (IOR 1 is no interface)", kIORPerturbation);
   SphereScene sc = IORScene(1.0);
   auto run = RunSphere(sc, true);
   Rig& rig = *run.R;
@@ -52,11 +49,10 @@ Row CaseIORExactlyOne(const char* name)
   }
   std::printf("ior_exactly_1: %d glass pixels, T2 vs V max %.3g deg, colour vs env(V) max %.3g\n",
     glass, worstT2, worstColour);
-  row.Error = worstColour;
-  row.ErrorBound = 1e-3; // float shader vs double C of the same formula
   row.Require(glass > 1000, "too few glass pixels");
   row.Require(worstT2 <= 1e-3, "T2 differs from the view direction at IOR 1");
-  FillCommon(row, run.Base, run.Smooth, run.Perturbed, 0);
+  // float shader vs double C of the same formula
+  FillCommon(row, run, worstColour, 1e-3, 0);
   return row;
 }
 
@@ -64,10 +60,7 @@ namespace
 {
 Row CaseIORNearOne(const char* name, double ior)
 {
-  Row row;
-  row.Case = name;
-  row.Measure = "T2 angle vs closed form, all glass pixels (deg)";
-  row.Perturbation = "IOR x (1 + 1e-6)";
+  Row row(name, "T2 angle vs closed form, all glass pixels (deg)", kIORPerturbation);
   SphereScene sc = IORScene(ior);
   auto run = RunSphere(sc, true);
   const SphereMeasure m = MeasureSphere(*run.R, run.Base, sc);
@@ -87,12 +80,10 @@ Row CaseIORNearOne(const char* name, double ior)
   }
   std::printf("%s: %d pixels, T2 error max %.3g deg (inside 0.9 R %.3g), mean %.3g\n", name,
     m.Compared, worst, m.MaxInner, m.Mean);
-  row.Error = worst;
+  row.Require(m.Compared > 1000, "too few glass pixels");
   // A deviation of 1e-6 bends rays by ~1e-6 tan(theta) rad; what remains is float rounding of
   // the refraction near grazing incidence (1 - eta^2 sin^2 in single precision).
-  row.ErrorBound = 0.05;
-  row.Require(m.Compared > 1000, "too few glass pixels");
-  FillCommon(row, run.Base, run.Smooth, run.Perturbed, 0);
+  FillCommon(row, run, worst, 0.05, 0);
   return row;
 }
 }
@@ -109,10 +100,7 @@ Row CaseIOROneMinusMicro(const char* name)
 
 Row CaseBubble(const char* name)
 {
-  Row row;
-  row.Case = name;
-  row.Measure = "T2 angle vs closed form, impact < 0.9 R_crit or TIR (deg)";
-  row.Perturbation = "IOR x (1 + 1e-6)";
+  Row row(name, "T2 angle vs closed form, impact < 0.9 R_crit or TIR (deg)", kIORPerturbation);
   SphereScene sc = IORScene(0.75);
   auto run = RunSphere(sc, true);
   const Frame& f = run.Base;
@@ -131,8 +119,7 @@ Row CaseBubble(const char* name)
     {
       continue;
     }
-    const double along = rf_vec3_dot(rays[i], c);
-    const double impact = std::sqrt(std::max(0.0, rf_vec3_dot(c, c) - along * along));
+    const double impact = ImpactParameter(rays[i], c);
     const double e = AngleDegrees(f.T2At(i), t.T2);
     if (impact > 1.02 * sc.IOR * sc.Radius)
     {
@@ -149,23 +136,18 @@ Row CaseBubble(const char* name)
   std::printf("ior_below_1_bubble: refracted %d px, T2 error max %.3g deg; TIR on entry %d px "
               "(%d flagged 3), T2 error max %.3g deg\n",
     inner, worstInner, tirPixels, tirFlagged, worstTIR);
-  row.Error = std::max(worstInner, worstTIR);
+  row.Require(inner > 300 && tirPixels > 300, "the scene does not show both regimes");
+  row.Require(tirFlagged == tirPixels, "TIR on entry is not flagged (3)");
   // Inside, as the sphere cases: the search's 1/32 of the segment and the tessellated back
   // normals (2.3 deg with the paper's search alone, SecantRefinement off); on entry TIR only
   // the interpolated front normal.
-  row.ErrorBound = 2.5;
-  row.Require(inner > 300 && tirPixels > 300, "the scene does not show both regimes");
-  row.Require(tirFlagged == tirPixels, "TIR on entry is not flagged (3)");
-  FillCommon(row, run.Base, run.Smooth, run.Perturbed, 0);
+  FillCommon(row, run, std::max(worstInner, worstTIR), 2.5, 0);
   return row;
 }
 
 Row CaseIORThousand(const char* name)
 {
-  Row row;
-  row.Case = name;
-  row.Measure = "colour vs closed form (Fresnel mix), impact < 0.9 R";
-  row.Perturbation = "IOR x (1 + 1e-6)";
+  Row row(name, "colour vs closed form (Fresnel mix), impact < 0.9 R", kIORPerturbation);
   SphereScene sc = IORScene(1000.0);
   auto run = RunSphere(sc, true);
   Rig& rig = *run.R;
@@ -176,8 +158,7 @@ Row CaseIORThousand(const char* name)
   const auto rays = rig.PixelRays(f.W, f.H);
   for (int i = 0; i < f.W * f.H; ++i)
   {
-    const double along = rf_vec3_dot(rays[i], c);
-    const double impact = std::sqrt(std::max(0.0, rf_vec3_dot(c, c) - along * along));
+    const double impact = ImpactParameter(rays[i], c);
     if (!f.Glass(i) || impact >= 0.9 * sc.Radius)
     {
       continue;
@@ -225,12 +206,10 @@ Row CaseIORThousand(const char* name)
     }
   }
   std::printf("ior_1000: %d pixels, colour error max %.3g\n", count, worst);
-  row.Error = worst;
+  row.Require(count > 1000, "too few glass pixels");
   // The reflectance is >= 0.996 everywhere: the refracted part, whose direction DIR cannot
   // resolve at n = 1000 (the exit is TIR-clamped), weighs at most 0.004 x 3.
-  row.ErrorBound = 0.02;
-  row.Require(count > 1000, "too few glass pixels");
-  FillCommon(row, run.Base, run.Smooth, run.Perturbed, 0);
+  FillCommon(row, run, worst, 0.02, 0);
   // T2 at n = 1000 is the one output where the exit formula matters: GLSL refract() cancels
   // eta I against eta cos N, which left 6% float noise in the tangential part and swung T2 by
   // 8.6 deg under this perturbation; refracting from the tangential part (rfRefractWithPolicy,

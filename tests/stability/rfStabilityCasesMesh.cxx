@@ -83,20 +83,16 @@ Row CaseDegenerate(const char* name)
 
 Row CaseOpenMesh(const char* name)
 {
-  Row row;
-  row.Case = name;
-  row.Measure = "T2 angle vs V (a single open sheet), inside silhouette (deg)";
-  row.Perturbation = "geometry x (1 + 1e-6)";
+  Row row(name,
+    "T2 angle vs V (a single open sheet), inside silhouette (deg)",
+    kGeometryPerturbation);
   // The upper half of a sphere, open at its equator, seen from above: every ray crosses one
   // surface, the back capture holds that same surface, and the pass must act as a thin sheet.
   SphereScene sc;
   sc.Poly = rftest::SpherePoly(sc.Centre, sc.Radius, sc.Resolution, false, 90.0);
   const Run run = RunSphere(sc, false);
-  Rig* rig = run.R.get();
   const Frame& base = run.Base;
-  const Frame& smooth = run.Smooth;
-  const Frame& perturbed = run.Perturbed;
-  const auto rays = rig->PixelRays(base.W, base.H);
+  const auto rays = run.R->PixelRays(base.W, base.H);
   double worst = 0.0;
   int count = 0;
   for (int i = 0; i < base.W * base.H; ++i)
@@ -108,11 +104,9 @@ Row CaseOpenMesh(const char* name)
     }
   }
   std::printf("open_mesh: %d pixels, T2 vs V max %.3g deg\n", count, worst);
-  row.Error = worst;
-  // The exit normal is the entry normal read back from the capture.
-  row.ErrorBound = 0.1;
   row.Require(count > 1000, "too few glass pixels");
-  FillCommon(row, base, smooth, perturbed, 0);
+  // The exit normal is the entry normal read back from the capture.
+  FillCommon(row, run, worst, 0.1, 0);
   return row;
 }
 
@@ -144,10 +138,7 @@ int Regions(vtkPolyData* poly)
 
 Row CaseTopologyChange(const char* name)
 {
-  Row row;
-  row.Case = name;
-  row.Measure = "T2 angle vs a fresh pass on the new mesh (deg)";
-  row.Perturbation = "geometry x (1 + 1e-6)";
+  Row row(name, "T2 angle vs a fresh pass on the new mesh (deg)", kGeometryPerturbation);
   // Metaballs contoured at two times with different numbers of blobs: the same actor gets the
   // new mesh between two frames and must give what a fresh pass gives on it.
   auto before = Metaballs(0.0);

@@ -44,10 +44,7 @@ namespace
 // refracting T1 there is the one-texel limit, and the pass must be at that limit.
 Row OneTexelCase(const char* name, const char* measure, const SphereScene& sc)
 {
-  Row row;
-  row.Case = name;
-  row.Measure = measure;
-  row.Perturbation = "geometry x (1 + 1e-6)";
+  Row row(name, measure, kGeometryPerturbation);
   // Look along -z at the origin, not at the sphere, so the pixel's ray passes off-centre.
   SphereScene offCentre = sc;
   offCentre.FocalAtCentre = false;
@@ -55,8 +52,6 @@ Row OneTexelCase(const char* name, const char* measure, const SphereScene& sc)
   const Run run = RunSphere(offCentre, false);
   Rig* rig = run.R.get();
   const Frame& base = run.Base;
-  const Frame& smooth = run.Smooth;
-  const Frame& perturbed = run.Perturbed;
   const rf_vec3 c = rig->ToView(sc.Centre);
   const auto rays = rig->PixelRays(base.W, base.H);
   int covered = 0;
@@ -92,12 +87,10 @@ Row OneTexelCase(const char* name, const char* measure, const SphereScene& sc)
   std::printf("%s: %d pixel(s) covered, T2 error max %.3g deg; the one-texel limit is %.3g deg "
               "from the closed form, the pass %.3g deg from that limit\n",
     name, covered, worst, model, modelError);
-  row.Error = worst;
-  // The one-texel limit's own error, plus the tessellation's (a 96-gon sphere).
-  row.ErrorBound = model + 1.0;
   row.Require(modelError <= 1.0, "the pass is not at the one-texel limit");
   row.Require(covered == 1, "the object does not cover exactly one pixel");
-  FillCommon(row, base, smooth, perturbed, 0);
+  // The one-texel limit's own error, plus the tessellation's (a 96-gon sphere).
+  FillCommon(row, run, worst, model + 1.0, 0);
   return row;
 }
 }
@@ -128,10 +121,9 @@ Row CaseOnePixelWindow(const char* name)
 
 Row CaseNearPlane(const char* name)
 {
-  Row row;
-  row.Case = name;
-  row.Measure = "T2 angle vs closed form, unclipped entry, impact < 0.9 R (deg)";
-  row.Perturbation = "geometry x (1 + 1e-6)";
+  Row row(name,
+    "T2 angle vs closed form, unclipped entry, impact < 0.9 R (deg)",
+    kGeometryPerturbation);
   // The near plane (distance 1.6) cuts the front cap of a sphere off the view axis (its
   // nearest point at distance 1.5): part of the pixels see through the cut.
   SphereScene sc;
@@ -158,10 +150,8 @@ Row CaseNearPlane(const char* name)
   std::printf("near_plane_crossing: %d pixels, T2 error max %.3g deg (mean %.3g); %d pixels "
               "enter in front of the near plane (%d drawn as glass, finite)\n",
     m.Compared, m.MaxInner, m.Mean, clipped, clippedGlass);
-  row.Error = m.MaxInner;
-  row.ErrorBound = kSphereMax;
   row.Require(clipped > 100, "the near plane does not cut the sphere");
-  FillCommon(row, run.Base, run.Smooth, run.Perturbed, 2);
+  FillCommon(row, run, m.MaxInner, kSphereMax, 2);
   return row;
 }
 }

@@ -88,8 +88,7 @@ SphereMeasure MeasureSphere(Rig& rig, const Frame& f, const SphereScene& sc,
   {
     const rf_vec3 d = rays[i];
     const Trace t = ThroughSphere(d, c, sc.Radius, sc.IOR);
-    const double along = rf_vec3_dot(d, c);
-    const double impact = std::sqrt(std::max(0.0, rf_vec3_dot(c, c) - along * along)) / sc.Radius;
+    const double impact = ImpactParameter(d, c) / sc.Radius;
     if (t.Hit != f.Glass(i))
     {
       m.CoreMismatch += impact < 0.98 ? 1 : 0;
@@ -121,15 +120,11 @@ Run RunSphere(const SphereScene& sc, bool perturbIOR)
   scene.Poly = sc.Poly ? sc.Poly
                        : rftest::SpherePoly(sc.Centre, sc.Radius, sc.Resolution, sc.DoublePoints);
   scene.IOR = sc.IOR;
-  std::copy(sc.Eye, sc.Eye + 3, scene.Eye);
-  std::copy(sc.FocalAtCentre ? sc.Centre : sc.Focal, (sc.FocalAtCentre ? sc.Centre : sc.Focal) + 3,
-    scene.Focal);
-  std::copy(sc.Up, sc.Up + 3, scene.Up);
-  scene.ViewAngle = sc.ViewAngle;
-  scene.Near = sc.Near;
-  scene.Far = sc.Far;
-  scene.Width = sc.Width;
-  scene.Height = sc.Height;
+  static_cast<View&>(scene) = sc;
+  if (sc.FocalAtCentre)
+  {
+    std::copy(sc.Centre, sc.Centre + 3, scene.Focal);
+  }
   scene.PerturbIOR = perturbIOR;
   std::copy(sc.Centre, sc.Centre + 3, scene.PerturbCentre);
   return RunScene(scene);
@@ -157,6 +152,13 @@ void FillCommon(
   row.DeltaColourBound = kDeltaColourBound;
   std::printf("%s: %d glass pixels compared under perturbation, %d changed flag\n",
     row.Case.c_str(), ch.GlassPixels, ch.FlagChanges);
+}
+
+void FillCommon(Row& row, const Run& run, double error, double errorBound, int flagChangeBound)
+{
+  row.Error = error;
+  row.ErrorBound = errorBound;
+  FillCommon(row, run.Base, run.Smooth, run.Perturbed, flagChangeBound);
 }
 
 // The closed-form colour a pixel may show: per channel, the range the closed form takes over
@@ -235,20 +237,15 @@ bool InsideSilhouette(const Frame& f, int i)
 Row SphereRow(const char* name, const SphereScene& sc, double bound, double meanBound,
   const char* measure, int flagBound)
 {
-  Row row;
-  row.Case = name;
-  row.Measure = measure;
-  row.Perturbation = "geometry x (1 + 1e-6)";
+  Row row(name, measure, kGeometryPerturbation);
   auto run = RunSphere(sc, false);
   const SphereMeasure m = MeasureSphere(*run.R, run.Base, sc);
   std::printf("%s: %d pixels, T2 error inside 0.9 R max %.3g deg, mean %.3g deg; %d coverage "
               "mismatches inside 0.98 R\n",
     name, m.Compared, m.MaxInner, m.Mean, m.CoreMismatch);
-  row.Error = m.MaxInner;
-  row.ErrorBound = bound;
   row.Require(m.Mean <= meanBound, "mean T2 error above its bound");
   row.Require(m.CoreMismatch <= 2, "the glass does not cover the sphere's silhouette");
-  FillCommon(row, run.Base, run.Smooth, run.Perturbed, flagBound);
+  FillCommon(row, run, m.MaxInner, bound, flagBound);
   return row;
 }
 }

@@ -18,6 +18,8 @@ namespace rfstab
 using rftest::Rig;
 
 constexpr double kPerturbation = 1e-6;
+constexpr const char* kGeometryPerturbation = "geometry x (1 + 1e-6)";
+constexpr const char* kIORPerturbation = "IOR x (1 + 1e-6)";
 constexpr double kPi = 3.14159265358979323846;
 
 // Bounds shared by the cases; each case states why where it differs.
@@ -35,11 +37,9 @@ constexpr double kDeltaColourBound = 0.02;
 // built-in environment (Base: what the errors are measured on), under the smooth environment
 // (Smooth), and under the smooth environment with the input perturbed by a relative 1e-6
 // (Perturbed: continuity), then undoes the perturbation.
-struct Scene
+// The camera and window every case starts from; each case changes what its scene needs.
+struct View
 {
-  vtkSmartPointer<vtkPolyData> Poly;
-  vtkSmartPointer<vtkMatrix4x4> Placement; // user matrix; none: the data's own coordinates
-  double IOR = 1.5;
   double Eye[3] = { 0.0, 0.0, 4.0 };
   double Focal[3] = { 0.0, 0.0, 0.0 };
   double Up[3] = { 0.0, 1.0, 0.0 };
@@ -48,6 +48,13 @@ struct Scene
   double Far = 10.0;
   int Width = 96;
   int Height = 96;
+};
+
+struct Scene : View
+{
+  vtkSmartPointer<vtkPolyData> Poly;
+  vtkSmartPointer<vtkMatrix4x4> Placement; // user matrix; none: the data's own coordinates
+  double IOR = 1.5;
   bool PerturbIOR = false;                    // else the geometry is scaled by 1 + 1e-6 ...
   double PerturbCentre[3] = { 0.0, 0.0, 0.0 }; // ... about this point (without a placement)
 };
@@ -66,22 +73,14 @@ Run RunScene(const Scene& sc, const std::function<void(Run&)>& beforeBase = null
 
 //------------------------------------------------------------------------------
 // Sphere scenes: the closed form is the ray through a sphere (rfstab::ThroughSphere).
-struct SphereScene
+struct SphereScene : View
 {
   double Centre[3] = { 0.0, 0.0, 0.0 };
   double Radius = 1.0;
   int Resolution = 96;
-  double Eye[3] = { 0.0, 0.0, 4.0 };
-  double Up[3] = { 0.0, 1.0, 0.0 };
-  double ViewAngle = 40.0;
-  double Near = 1.0;
-  double Far = 10.0;
-  int Width = 96;
-  int Height = 96;
   double IOR = 1.5;
   bool DoublePoints = false;
   bool FocalAtCentre = true; // else the camera looks at Focal
-  double Focal[3] = { 0.0, 0.0, 0.0 };
   vtkSmartPointer<vtkPolyData> Poly; // replaces the sphere source's output when set
 };
 
@@ -119,6 +118,9 @@ void DumpPixel(const char* what, const Frame& f, int i, const Trace& t, double e
 /// the continuity bounds between the smooth and the perturbed frames.
 void FillCommon(
   Row& row, const Frame& base, const Frame& smooth, const Frame& perturbed, int flagChangeBound);
+
+/// FillCommon on a run's three frames, with the case's own error and bound.
+void FillCommon(Row& row, const Run& run, double error, double errorBound, int flagChangeBound);
 
 /// The distance of pixel (x, y)'s colour to the range `expected` takes over its footprint.
 double FootprintColourError(Rig& rig, const Frame& f, int x, int y,

@@ -5,7 +5,7 @@
 //              no GL error), shows the environment rather than the built-in one, and matches
 //              its baseline (-V baseline -T output folder, VTK's regression-image test)
 // Argument 2 is a folder for the environment files the test writes.
-#include "../common/rf_require.h"
+#include "rfTestScene.h"
 #include "vtkISRDistanceFilter.h"
 #include "vtkRefractionImageIO.h"
 #include "vtkRefractionPass.h"
@@ -25,7 +25,6 @@
 #include <vtkSphereSource.h>
 #include <vtkTexture.h>
 #include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 #include <vtk_glew.h>
 
 #include <cmath>
@@ -98,16 +97,6 @@ void Build(Scene& scene, double ior)
   scene.Renderer->GetActiveCamera()->Elevation(15.0);
 }
 
-vtkSmartPointer<vtkImageData> Grab(vtkRenderWindow* window)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->DeepCopy(grab->GetOutput());
-  return image;
-}
 
 int MethodFromName(const std::string& name)
 {
@@ -144,7 +133,7 @@ int Constant(const std::string& folder)
     const GLenum glError = glGetError();
     RF_REQUIRE(glError == GL_NO_ERROR, "GL error 0x%x with %s", static_cast<unsigned>(glError),
       name);
-    vtkSmartPointer<vtkImageData> image = Grab(scene.Window);
+    vtkSmartPointer<vtkImageData> image = rftest::Grab(scene.Window);
     // The middle 9x9 pixels lie well inside the sphere's silhouette.
     int worst = 0;
     for (int y = kSize / 2 - 4; y <= kSize / 2 + 4; ++y)
@@ -194,13 +183,13 @@ int Method(const std::string& name, const std::string& folder, int argc, char* a
   Build(scene, 1.5);
   scene.Pass->SetMethod(MethodFromName(name));
   scene.Window->Render();
-  vtkSmartPointer<vtkImageData> builtin = Grab(scene.Window);
+  vtkSmartPointer<vtkImageData> builtin = rftest::Grab(scene.Window);
   scene.Renderer->SetEnvironmentTexture(environment);
   scene.Window->Render();
   const GLenum glError = glGetError();
   RF_REQUIRE(glError == GL_NO_ERROR, "GL error 0x%x with %s and a cube-map environment",
     static_cast<unsigned>(glError), name.c_str());
-  vtkSmartPointer<vtkImageData> withCube = Grab(scene.Window);
+  vtkSmartPointer<vtkImageData> withCube = rftest::Grab(scene.Window);
   vtkNew<vtkImageDifference> difference;
   difference->SetInputData(withCube);
   difference->SetImageData(builtin);

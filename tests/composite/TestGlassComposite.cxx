@@ -19,6 +19,7 @@
 #include "vtkRefractionPass.h"
 
 #include "rfTestRig.h"
+#include "rfTestPNG.h"
 #include "rfTestScene.h"
 #include "rf_metrics.h"
 #include "rf_require.h"
@@ -32,7 +33,6 @@
 #include <vtkLookupTable.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPartitionedDataSet.h>
 #include <vtkPlaneSource.h>
 #include <vtkPointData.h>
@@ -175,14 +175,6 @@ vtkSmartPointer<vtkMultiBlockDataSet> Multiblock(const std::vector<Part>& parts)
   return blocks;
 }
 
-// Pictures for a person to look at, in the test's working folder (Testing/Temporary).
-void WritePNG(vtkImageData* image, const std::string& file)
-{
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(image);
-  writer->SetFileName(file.c_str());
-  writer->Write();
-}
 
 double PSNR(vtkImageData* a, vtkImageData* b)
 {
@@ -249,8 +241,8 @@ int CompareWithActors(int method, vtkDataObject* data, const std::vector<Part>& 
     scene->Renderer->AddActor(actors.back());
   }
   auto separate = scene->Render();
-  WritePNG(one, std::string(name) + "_composite.png");
-  WritePNG(separate, std::string(name) + "_actors.png");
+  rftest::WritePNG(one, std::string(name) + "_composite.png");
+  rftest::WritePNG(separate, std::string(name) + "_actors.png");
   const double psnr = PSNR(one, separate);
   const int differing = rftest::DifferingPixels(one, separate, 2);
   std::printf("%s: one composite actor against %zu actors: PSNR %.2f dB, %d pixels differ by "
@@ -353,7 +345,7 @@ int NestedBlocks()
   rftest::WithoutHighlights(composite);
   scene->Renderer->AddActor(composite);
   auto outerOnly = scene->Render();
-  WritePNG(outerOnly, "nested_blocks_outer_only.png");
+  rftest::WritePNG(outerOnly, "nested_blocks_outer_only.png");
   const int changed = rftest::DifferingPixels(picture, outerOnly, 8);
   delete scene;
   std::printf("nested_blocks: hiding the inner block changes %d pixels\n", changed);

@@ -184,22 +184,13 @@ static double sample_from_data(void* context, const double tc[2])
 static void check_shader_search(fuzz_input* in, rf_vec3 P1, rf_vec3 T1, double depth_min,
   double depth_max, const double projection[16], int steps)
 {
-  rf_dir_search_input input;
+  rf_dir_search_input input = { .P1 = P1, .T1 = T1, .depth_min = depth_min,
+    .depth_max = depth_max, .viewport = { 64, 48 }, .steps = steps, .adaptive = steps & 1,
+    .secant = (steps >> 1) & 1, .parallel = (steps >> 2) & 1 };
   rf_dir_search_result result;
   rf_dir_search_result untouched;
   rf_status s;
-  memset(&input, 0, sizeof(input));
-  input.P1 = P1;
-  input.T1 = T1;
-  input.depth_min = depth_min;
-  input.depth_max = depth_max;
   memcpy(input.projection, projection, sizeof(input.projection));
-  input.viewport[0] = 64;
-  input.viewport[1] = 48;
-  input.steps = steps;
-  input.adaptive = steps & 1;
-  input.secant = (steps >> 1) & 1;
-  input.parallel = (steps >> 2) & 1;
   memset(&untouched, 0x5a, sizeof(untouched));
   result = untouched;
   s = rf_dir_search(&input, sample_from_data, in, &result);

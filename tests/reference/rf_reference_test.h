@@ -7,6 +7,8 @@
 #include "rf_tracer.h"
 #include "rf_vec3.h"
 
+#include "rf_test.h"
+
 #include <math.h>
 #include <string.h>
 
@@ -14,7 +16,8 @@
 #define RFT_DEG (RFT_PI / 180.0)
 
 /* A box as 6 faces x 4 vertices with flat normals (so interpolation returns the face
- * normal exactly), rotated by `rotation` (row-major 3x3, local -> world) about its centre. */
+ * normal exactly), rotated by `rotation` (row-major 3x3, local -> world; NULL: axis-aligned)
+ * about its centre. */
 typedef struct rft_box
 {
   float positions[72];
@@ -27,6 +30,8 @@ static inline void rft_make_box(rft_box* box, const double centre[3], const doub
 {
   /* Face k: axis k/2, sign +1 for even k. Corners in counter-clockwise order seen from
    * outside. */
+  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  const double* turn = rotation ? rotation : identity;
   int face;
   for (face = 0; face < 6; ++face)
   {
@@ -48,10 +53,10 @@ static inline void rft_make_box(rft_box* box, const double centre[3], const doub
       n_local[axis] = sign;
       for (r = 0; r < 3; ++r)
       {
-        const double p = rotation[3 * r + 0] * local[0] + rotation[3 * r + 1] * local[1] +
-          rotation[3 * r + 2] * local[2];
-        const double n = rotation[3 * r + 0] * n_local[0] + rotation[3 * r + 1] * n_local[1] +
-          rotation[3 * r + 2] * n_local[2];
+        const double p =
+          turn[3 * r + 0] * local[0] + turn[3 * r + 1] * local[1] + turn[3 * r + 2] * local[2];
+        const double n = turn[3 * r + 0] * n_local[0] + turn[3 * r + 1] * n_local[1] +
+          turn[3 * r + 2] * n_local[2];
         box->positions[3 * (4 * face + corner) + r] = (float)(centre[r] + p);
         box->normals[3 * (4 * face + corner) + r] = (float)n;
       }
@@ -108,6 +113,22 @@ static inline void rft_ortho(double scale, double aspect, double near_d, double 
   m[11] = -(far_d + near_d) / (far_d - near_d);
 }
 
+/* A parallel camera on the +z axis at `eye_distance` from the origin, looking down -z with +y
+ * up: VTK's projection of half height `scale` for a width x height image, clipping between
+ * near_d and far_d. Tests that look from elsewhere replace `view` afterwards. */
+static inline rf_camera rft_parallel_camera(double eye_distance, double scale, int width,
+  int height, double near_d, double far_d)
+{
+  rf_camera camera;
+  rft_identity4(camera.view);
+  /* 0.0 - d rather than -d: an eye at the origin keeps a +0.0 entry, as a plain identity. */
+  camera.view[11] = 0.0 - eye_distance;
+  rft_ortho(scale, (double)width / height, near_d, far_d, camera.projection);
+  camera.width = width;
+  camera.height = height;
+  return camera;
+}
+
 /* World -> view for an eye at `eye` looking along unit `forward` with `up`: rows right, up',
  * -forward; the view-space eye is the origin. */
 static inline void rft_look_along(rf_vec3 eye, rf_vec3 forward, rf_vec3 up, double m[16])
@@ -126,6 +147,47 @@ static inline void rft_look_along(rf_vec3 eye, rf_vec3 forward, rf_vec3 up, doub
     m[4 * r + 3] = -rf_vec3_dot(rows[r], eye);
   }
 }
+
+/* The common start of a tracer test: one glass box with its face normals, the camera, default
+ * options and an image of the camera's size (the test frees it: rf_trace_image_free). `glass`
+ * points into `box`, so the scene is used where it was initialized, never copied. */
+typedef struct rft_box_scene
+{
+  rft_box box;
+  rf_mesh glass;
+  rf_camera camera;
+  rf_trace_options options;
+  rf_trace_image image;
+} rft_box_scene;
+
+static inline void rft_box_scene_init(rft_box_scene* scene, const double centre[3],
+  const double half[3], const double rotation[9], double ior, rf_camera camera)
+{
+  rft_make_box(&scene->box, centre, half, rotation);
+  scene->glass = rft_box_mesh(&scene->box, ior, 1);
+  scene->camera = camera;
+  /* Checked here, so that every test built on a scene still asserts that its setup works. */
+  CHECK(rf_trace_options_default(&scene->options) == RF_OK);
+  CHECK(rf_trace_image_alloc(&scene->image, camera.width, camera.height) == RF_OK);
+}
+
+/* The scene traced as it stands: its glass alone, into its own image. */
+static inline rf_status rft_box_scene_trace(rft_box_scene* scene)
+{
+  return rf_trace(&scene->glass, 1, &scene->camera, &scene->options, &scene->image);
+}
+
+/* The largest errors over the pixels of an image that a test compares with its closed form,
+ * by kind; what a kind means (and its unit) is the test's to say. */
+typedef struct rft_pixel_errors
+{
+  int checked;     /* pixels compared */
+  int flags_wrong; /* pixels whose hit, bounce or TIR flags differ */
+  double position; /* |P error| */
+  double angle;    /* direction error, degrees */
+  double length;   /* path length or shift error */
+  double colour;   /* |colour error| per channel */
+} rft_pixel_errors;
 
 static inline rf_vec3 rft_to_view_point(const double m[16], rf_vec3 p)
 {

@@ -77,19 +77,6 @@ static void free_sphere(sphere_mesh* m)
   free(m->triangles);
 }
 
-/* Snell's law written out here (unit I and N, N against I): false under TIR. */
-static int snell(rf_vec3 I, rf_vec3 N, double eta, rf_vec3* T)
-{
-  const double c = -rf_vec3_dot(I, N);
-  const double k = 1.0 - eta * eta * (1.0 - c * c);
-  if (k < 0.0)
-  {
-    return 0;
-  }
-  *T = rf_vec3_add(rf_vec3_scale(I, eta), rf_vec3_scale(N, eta * c - sqrt(k)));
-  return 1;
-}
-
 /* The view direction at the vertex with incidence angle theta and azimuth phi around n. */
 static rf_vec3 view_at(rf_vec3 n, double theta, double phi)
 {
@@ -121,10 +108,10 @@ static void test_path_closed_form(const sphere_mesh* m)
       double length = 0.0;
       double chord;
       rf_vec3 p2;
-      CHECK(snell(V, n, 1.0 / ior, &T1));
+      CHECK(rf_test_snell(V, n, 1.0 / ior, &T1));
       chord = -2.0 * rf_vec3_dot(p, T1);
       p2 = rf_vec3_add(p, rf_vec3_scale(T1, chord));
-      CHECK(snell(T1, rf_vec3_scale(p2, -1.0), ior, &T2));
+      CHECK(rf_test_snell(T1, rf_vec3_scale(p2, -1.0), ior, &T2));
       CHECK(rf_sh_transfer_path(m->positions, m->normals, m->vertex_count, m->triangles,
               m->triangle_count, ior, 4, vertex, view, exit_direction, &length) == RF_OK);
       worst_angle = fmax(worst_angle,

@@ -13,94 +13,88 @@
 #define HEIGHT 30
 
 /* A camera on the +z axis at distance 5 looking at the origin, parallel projection. */
-static void make_camera(rf_camera* camera)
+static rf_camera make_camera(void)
 {
-  rft_identity4(camera->view);
-  camera->view[11] = -5.0;
-  rft_ortho(1.5, (double)WIDTH / HEIGHT, 0.5, 20.0, camera->projection);
-  camera->width = WIDTH;
-  camera->height = HEIGHT;
+  return rft_parallel_camera(5.0, 1.5, WIDTH, HEIGHT, 0.5, 20.0);
 }
 
 static void test_rejected_inputs(void)
 {
   const double centre[3] = { 0.0, 0.0, 0.0 };
   const double half[3] = { 1.0, 1.0, 1.0 };
-  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-  rft_box box;
+  rft_box_scene scene;
+  /* Short names for the scene's valid inputs, which each check below varies one at a time. */
+  const rft_box* const box = &scene.box;
+  const rf_mesh* const mesh = &scene.glass;
+  const rf_camera* const camera = &scene.camera;
+  const rf_trace_options* const options = &scene.options;
+  rf_trace_image* const image = &scene.image;
   rft_box broken;
   unsigned bad_triangles[36];
-  rf_mesh mesh;
   rf_mesh bad;
-  rf_camera camera;
   rf_camera bad_camera;
-  rf_trace_options options;
   rf_trace_options bad_options;
-  rf_trace_image image;
   rf_trace_image small;
-  rft_make_box(&box, centre, half, identity);
-  mesh = rft_box_mesh(&box, 1.5, 1);
-  make_camera(&camera);
-  CHECK(rf_trace_options_default(&options) == RF_OK);
+  /* Asserts that rf_trace_options_default and rf_trace_image_alloc succeed. */
+  rft_box_scene_init(&scene, centre, half, NULL, 1.5, make_camera());
   CHECK(rf_trace_options_default(NULL) == RF_ERR_NULL_ARGUMENT);
-  CHECK(rf_trace_image_alloc(&image, WIDTH, HEIGHT) == RF_OK);
   CHECK(rf_trace_image_alloc(&small, 0, 5) == RF_REF_ERR_BAD_OPTION);
   CHECK(small.colour == NULL && small.width == 0);
   CHECK(rf_trace_image_alloc(NULL, 4, 4) == RF_ERR_NULL_ARGUMENT);
 
-  CHECK(rf_trace(&mesh, 1, &camera, &options, &image) == RF_OK);
-  CHECK(rf_trace(NULL, 1, &camera, &options, &image) == RF_ERR_NULL_ARGUMENT);
-  CHECK(rf_trace(&mesh, 1, NULL, &options, &image) == RF_ERR_NULL_ARGUMENT);
-  CHECK(rf_trace(&mesh, 1, &camera, NULL, &image) == RF_ERR_NULL_ARGUMENT);
-  CHECK(rf_trace(&mesh, 1, &camera, &options, NULL) == RF_ERR_NULL_ARGUMENT);
+  CHECK(rf_trace(mesh, 1, camera, options, image) == RF_OK);
+  CHECK(rf_trace(NULL, 1, camera, options, image) == RF_ERR_NULL_ARGUMENT);
+  CHECK(rf_trace(mesh, 1, NULL, options, image) == RF_ERR_NULL_ARGUMENT);
+  CHECK(rf_trace(mesh, 1, camera, NULL, image) == RF_ERR_NULL_ARGUMENT);
+  CHECK(rf_trace(mesh, 1, camera, options, NULL) == RF_ERR_NULL_ARGUMENT);
 
   /* Meshes. */
-  broken = box;
+  broken = *box;
   broken.positions[7] = NAN;
   bad = rft_box_mesh(&broken, 1.5, 1);
-  CHECK(rf_trace(&bad, 1, &camera, &options, &image) == RF_ERR_NOT_FINITE);
-  broken = box;
+  CHECK(rf_trace(&bad, 1, camera, options, image) == RF_ERR_NOT_FINITE);
+  broken = *box;
   broken.normals[4] = INFINITY;
   bad = rft_box_mesh(&broken, 1.5, 1);
-  CHECK(rf_trace(&bad, 1, &camera, &options, &image) == RF_ERR_NOT_FINITE);
-  memcpy(bad_triangles, box.triangles, sizeof(bad_triangles));
+  CHECK(rf_trace(&bad, 1, camera, options, image) == RF_ERR_NOT_FINITE);
+  memcpy(bad_triangles, box->triangles, sizeof(bad_triangles));
   bad_triangles[17] = 24;
-  bad = mesh;
+  bad = *mesh;
   bad.triangles = bad_triangles;
-  CHECK(rf_trace(&bad, 1, &camera, &options, &image) == RF_REF_ERR_INDEX_OUT_OF_RANGE);
-  bad = mesh;
+  CHECK(rf_trace(&bad, 1, camera, options, image) == RF_REF_ERR_INDEX_OUT_OF_RANGE);
+  bad = *mesh;
   bad.ior = 0.0;
-  CHECK(rf_trace(&bad, 1, &camera, &options, &image) == RF_ERR_IOR_NOT_POSITIVE);
+  CHECK(rf_trace(&bad, 1, camera, options, image) == RF_ERR_IOR_NOT_POSITIVE);
   bad.ior = NAN;
-  CHECK(rf_trace(&bad, 1, &camera, &options, &image) == RF_ERR_NOT_FINITE);
-  bad = mesh;
+  CHECK(rf_trace(&bad, 1, camera, options, image) == RF_ERR_NOT_FINITE);
+  bad = *mesh;
   bad.absorption[2] = -0.1;
-  CHECK(rf_trace(&bad, 1, &camera, &options, &image) == RF_ERR_ABSORPTION_NEGATIVE);
-  bad = mesh;
+  CHECK(rf_trace(&bad, 1, camera, options, image) == RF_ERR_ABSORPTION_NEGATIVE);
+  bad = *mesh;
   bad.positions = NULL;
-  CHECK(rf_trace(&bad, 1, &camera, &options, &image) == RF_ERR_NULL_ARGUMENT);
+  CHECK(rf_trace(&bad, 1, camera, options, image) == RF_ERR_NULL_ARGUMENT);
 
   /* Options and camera. */
-  bad_options = options;
+  bad_options = *options;
   bad_options.max_depth = 0;
-  CHECK(rf_trace(&mesh, 1, &camera, &bad_options, &image) == RF_REF_ERR_BAD_OPTION);
+  CHECK(rf_trace(mesh, 1, camera, &bad_options, image) == RF_REF_ERR_BAD_OPTION);
   bad_options.max_depth = RF_TRACE_MAX_DEPTH_LIMIT + 1;
-  CHECK(rf_trace(&mesh, 1, &camera, &bad_options, &image) == RF_REF_ERR_BAD_OPTION);
-  bad_options = options;
+  CHECK(rf_trace(mesh, 1, camera, &bad_options, image) == RF_REF_ERR_BAD_OPTION);
+  bad_options = *options;
   bad_options.threads = 0;
-  CHECK(rf_trace(&mesh, 1, &camera, &bad_options, &image) == RF_REF_ERR_BAD_OPTION);
-  bad_options = options;
+  CHECK(rf_trace(mesh, 1, camera, &bad_options, image) == RF_REF_ERR_BAD_OPTION);
+  bad_options = *options;
   bad_options.mode = (rf_trace_mode)7;
-  CHECK(rf_trace(&mesh, 1, &camera, &bad_options, &image) == RF_REF_ERR_BAD_OPTION);
-  bad_camera = camera;
+  CHECK(rf_trace(mesh, 1, camera, &bad_options, image) == RF_REF_ERR_BAD_OPTION);
+  bad_camera = *camera;
   bad_camera.width = WIDTH + 1; /* differs from the image */
-  CHECK(rf_trace(&mesh, 1, &bad_camera, &options, &image) == RF_REF_ERR_BAD_OPTION);
-  bad_camera = camera;
+  CHECK(rf_trace(mesh, 1, &bad_camera, options, image) == RF_REF_ERR_BAD_OPTION);
+  bad_camera = *camera;
   memset(bad_camera.projection, 0, sizeof(bad_camera.projection));
-  CHECK(rf_trace(&mesh, 1, &bad_camera, &options, &image) == RF_REF_ERR_BAD_OPTION);
-  bad_camera = camera;
+  CHECK(rf_trace(mesh, 1, &bad_camera, options, image) == RF_REF_ERR_BAD_OPTION);
+  bad_camera = *camera;
   bad_camera.view[3] = NAN;
-  CHECK(rf_trace(&mesh, 1, &bad_camera, &options, &image) == RF_ERR_NOT_FINITE);
+  CHECK(rf_trace(mesh, 1, &bad_camera, options, image) == RF_ERR_NOT_FINITE);
 
   /* Messages exist for the extra codes and fall through to the core's for the others. */
   CHECK(strcmp(rf_reference_status_message(RF_REF_ERR_EMBREE), "unknown status") != 0);
@@ -111,15 +105,15 @@ static void test_rejected_inputs(void)
   {
     size_t k;
     int hits = 0;
-    CHECK(rf_trace(NULL, 0, &camera, &options, &image) == RF_OK);
+    CHECK(rf_trace(NULL, 0, camera, options, image) == RF_OK);
     for (k = 0; k < (size_t)WIDTH * HEIGHT; ++k)
     {
-      hits += image.hit[k];
+      hits += image->hit[k];
     }
     CHECK(hits == 0);
   }
-  rf_trace_image_free(&image);
-  rf_trace_image_free(&image); /* freeing twice is harmless */
+  rf_trace_image_free(image);
+  rf_trace_image_free(image); /* freeing twice is harmless */
   rf_trace_image_free(NULL);
 }
 
@@ -144,7 +138,7 @@ static void test_open_mesh(void)
   mesh.triangles = triangle;
   mesh.triangle_count = 1;
   mesh.ior = 1.5;
-  make_camera(&camera);
+  camera = make_camera();
   CHECK(rf_trace_options_default(&options) == RF_OK);
   CHECK(rf_trace_image_alloc(&image, WIDTH, HEIGHT) == RF_OK);
   CHECK(rf_trace(&mesh, 1, &camera, &options, &image) == RF_OK);
@@ -173,7 +167,6 @@ static void test_several_meshes(void)
   const double near_centre[3] = { 0.0, 0.0, 1.0 };
   const double far_centre[3] = { 0.0, 0.0, -3.0 };
   const double half[3] = { 0.5, 0.5, 0.5 };
-  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   rft_box near_box;
   rft_box far_box;
   rf_mesh meshes[3];
@@ -181,13 +174,13 @@ static void test_several_meshes(void)
   rf_trace_options options;
   rf_trace_image image;
   const size_t centre = (size_t)(HEIGHT / 2) * WIDTH + WIDTH / 2;
-  rft_make_box(&near_box, near_centre, half, identity);
-  rft_make_box(&far_box, far_centre, half, identity);
+  rft_make_box(&near_box, near_centre, half, NULL);
+  rft_make_box(&far_box, far_centre, half, NULL);
   memset(&meshes[0], 0, sizeof(meshes[0]));
   meshes[0].ior = 1.0;
   meshes[1] = rft_box_mesh(&far_box, 1.2, 1);
   meshes[2] = rft_box_mesh(&near_box, 1.5, 1);
-  make_camera(&camera);
+  camera = make_camera();
   CHECK(rf_trace_options_default(&options) == RF_OK);
   CHECK(rf_trace_image_alloc(&image, WIDTH, HEIGHT) == RF_OK);
   CHECK(rf_trace(meshes, 3, &camera, &options, &image) == RF_OK);
@@ -219,29 +212,23 @@ static void test_threads(void)
   const double centre[3] = { 0.2, -0.1, 0.0 };
   const double half[3] = { 1.0, 0.7, 0.8 };
   double rotation[9];
-  rft_box box;
-  rf_mesh mesh;
-  rf_camera camera;
-  rf_trace_options options;
-  rf_trace_image one;
+  rft_box_scene scene;
+  const rf_trace_image* const one = &scene.image;
   rf_trace_image three;
   const size_t n = (size_t)WIDTH * HEIGHT;
   rft_rotation_x(0.6, rotation);
-  rft_make_box(&box, centre, half, rotation);
-  mesh = rft_box_mesh(&box, 1.5, 0);
-  make_camera(&camera);
-  CHECK(rf_trace_options_default(&options) == RF_OK);
-  options.mode = RF_TRACE_FULL;
-  CHECK(rf_trace_image_alloc(&one, WIDTH, HEIGHT) == RF_OK);
+  rft_box_scene_init(&scene, centre, half, rotation, 1.5, make_camera());
+  scene.glass.normals = NULL; /* geometric normals */
+  scene.options.mode = RF_TRACE_FULL;
   CHECK(rf_trace_image_alloc(&three, WIDTH, HEIGHT) == RF_OK);
-  options.threads = 1;
-  CHECK(rf_trace(&mesh, 1, &camera, &options, &one) == RF_OK);
-  options.threads = 3;
-  CHECK(rf_trace(&mesh, 1, &camera, &options, &three) == RF_OK);
-  CHECK(memcmp(one.colour, three.colour, 3 * n * sizeof(float)) == 0);
-  CHECK(memcmp(one.t2, three.t2, 3 * n * sizeof(float)) == 0);
-  CHECK(memcmp(one.hit, three.hit, n) == 0);
-  rf_trace_image_free(&one);
+  scene.options.threads = 1;
+  CHECK(rft_box_scene_trace(&scene) == RF_OK);
+  scene.options.threads = 3;
+  CHECK(rf_trace(&scene.glass, 1, &scene.camera, &scene.options, &three) == RF_OK);
+  CHECK(memcmp(one->colour, three.colour, 3 * n * sizeof(float)) == 0);
+  CHECK(memcmp(one->t2, three.t2, 3 * n * sizeof(float)) == 0);
+  CHECK(memcmp(one->hit, three.hit, n) == 0);
+  rf_trace_image_free(&scene.image);
   rf_trace_image_free(&three);
 }
 

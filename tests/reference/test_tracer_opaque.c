@@ -18,13 +18,26 @@
 
 /* Parallel camera on +z at distance 5, half height 1.5, half width 2: pixel (i, j) sees
  * x = ((i + 0.5) / 20 - 1) * 2, y = ((j + 0.5) / 15 - 1) * 1.5. */
-static void make_camera(rf_camera* camera)
+static rf_camera make_camera(void)
 {
-  rft_identity4(camera->view);
-  camera->view[11] = -5.0;
-  rft_ortho(1.5, (double)WIDTH / HEIGHT, 0.5, 20.0, camera->projection);
-  camera->width = WIDTH;
-  camera->height = HEIGHT;
+  return rft_parallel_camera(5.0, 1.5, WIDTH, HEIGHT, 0.5, 20.0);
+}
+
+/* The glass of these tests: a cube of side 1 and index 1.5 at the origin, which the camera
+ * sees face-on in its middle. */
+static void make_glass_scene(rft_box_scene* scene)
+{
+  const double centre[3] = { 0.0, 0.0, 0.0 };
+  const double half[3] = { 0.5, 0.5, 0.5 };
+  rft_box_scene_init(scene, centre, half, NULL, 1.5, make_camera());
+}
+
+/* rf_trace_scene of the glass scene with `opaque` around it, into the scene's image. */
+static rf_status trace_with(rft_box_scene* scene, const rf_opaque_mesh* opaque,
+  size_t opaque_count)
+{
+  return rf_trace_scene(&scene->glass, 1, opaque, opaque_count, &scene->camera, &scene->options,
+    &scene->image);
 }
 
 static size_t pixel(int i, int j)
@@ -84,9 +97,12 @@ static rf_opaque_material unlit(void)
   return m;
 }
 
-static rf_opaque_mesh plane_mesh(const plane* p)
+/* An unlit opaque mesh of the plane made by make_plane; it points into *p, so reshaping the
+ * plane with make_plane later moves the mesh too. */
+static rf_opaque_mesh make_wall(plane* p, double depth, double tilt, int reversed)
 {
   rf_opaque_mesh mesh;
+  make_plane(p, depth, tilt, reversed);
   memset(&mesh, 0, sizeof(mesh));
   mesh.positions = p->positions;
   mesh.vertex_count = 4;
@@ -149,67 +165,55 @@ static void test_shade_formula(void)
 
 static void test_plane_behind_glass(void)
 {
-  const double centre[3] = { 0.0, 0.0, 0.0 };
-  const double half[3] = { 0.5, 0.5, 0.5 };
-  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   const float triangle_colours[6] = { 1.f, 0.f, 0.f, 0.f, 0.f, 1.f };
   const double lower[3] = { 1.0, 0.0, 0.0 };
   const double upper[3] = { 0.0, 0.0, 1.0 };
   const double fresnel = rft_fresnel(0.0, 1.0, 1.5);
   double blended[3];
-  rft_box box;
+  rft_box_scene scene;
   plane back;
-  rf_mesh glass;
   rf_opaque_mesh wall;
-  rf_camera camera;
-  rf_trace_options options;
-  rf_trace_image image;
   int c;
-  rft_make_box(&box, centre, half, identity);
-  glass = rft_box_mesh(&box, 1.5, 1);
-  make_plane(&back, -2.0, 0.0, 0);
-  wall = plane_mesh(&back);
+  make_glass_scene(&scene);
+  wall = make_wall(&back, -2.0, 0.0, 0);
   wall.colour_binding = RF_COLOUR_PER_TRIANGLE;
   wall.colours = triangle_colours;
-  make_camera(&camera);
-  CHECK(rf_trace_options_default(&options) == RF_OK);
-  options.environment = constant_environment;
-  options.fresnel = 0;
-  CHECK(rf_trace_image_alloc(&image, WIDTH, HEIGHT) == RF_OK);
-  CHECK(rf_trace_scene(&glass, 1, &wall, 1, &camera, &options, &image) == RF_OK);
+  scene.options.environment = constant_environment;
+  scene.options.fresnel = 0;
+  CHECK(trace_with(&scene, &wall, 1) == RF_OK);
   /* Beside the glass: the plane itself, flat per triangle. */
-  CHECK(image.opaque[BESIDE_LOWER] == 1 && image.hit[BESIDE_LOWER] == 0);
-  CHECK(image.opaque[BESIDE_UPPER] == 1 && image.hit[BESIDE_UPPER] == 0);
-  check_colour(&image, BESIDE_LOWER, lower, 0.0);
-  check_colour(&image, BESIDE_UPPER, upper, 0.0);
+  CHECK(scene.image.opaque[BESIDE_LOWER] == 1 && scene.image.hit[BESIDE_LOWER] == 0);
+  CHECK(scene.image.opaque[BESIDE_UPPER] == 1 && scene.image.hit[BESIDE_UPPER] == 0);
+  check_colour(&scene.image, BESIDE_LOWER, lower, 0.0);
+  check_colour(&scene.image, BESIDE_UPPER, upper, 0.0);
   /* Through the glass face-on the ray leaves unbent and meets the plane behind. */
-  CHECK(image.hit[THROUGH_LOWER] == 1 && image.opaque[THROUGH_LOWER] == 0);
-  check_colour(&image, THROUGH_LOWER, lower, 1e-6);
+  CHECK(scene.image.hit[THROUGH_LOWER] == 1 && scene.image.opaque[THROUGH_LOWER] == 0);
+  check_colour(&scene.image, THROUGH_LOWER, lower, 1e-6);
   /* With Fresnel: F env(R) + (1 - F) plane (R goes back to the environment). */
-  options.fresnel = 1;
-  CHECK(rf_trace_scene(&glass, 1, &wall, 1, &camera, &options, &image) == RF_OK);
+  scene.options.fresnel = 1;
+  CHECK(trace_with(&scene, &wall, 1) == RF_OK);
   for (c = 0; c < 3; ++c)
   {
     blended[c] = fresnel * kEnvironment[c] + (1.0 - fresnel) * lower[c];
   }
-  check_colour(&image, THROUGH_LOWER, blended, 1e-6);
+  check_colour(&scene.image, THROUGH_LOWER, blended, 1e-6);
   /* Full mode, transmission only: the plane again (no absorption). */
-  options.fresnel = 0;
-  options.mode = RF_TRACE_FULL;
-  CHECK(rf_trace_scene(&glass, 1, &wall, 1, &camera, &options, &image) == RF_OK);
-  check_colour(&image, THROUGH_LOWER, lower, 1e-6);
-  check_colour(&image, BESIDE_UPPER, upper, 0.0);
+  scene.options.fresnel = 0;
+  scene.options.mode = RF_TRACE_FULL;
+  CHECK(trace_with(&scene, &wall, 1) == RF_OK);
+  check_colour(&scene.image, THROUGH_LOWER, lower, 1e-6);
+  check_colour(&scene.image, BESIDE_UPPER, upper, 0.0);
   /* Without the plane the glass shows the environment, and beside it nothing. */
-  CHECK(rf_trace_scene(&glass, 1, NULL, 0, &camera, &options, &image) == RF_OK);
-  check_colour(&image, THROUGH_LOWER, kEnvironment, 1e-6);
-  CHECK(image.opaque[BESIDE_LOWER] == 0 && image.colour[3 * BESIDE_LOWER] == 0.f);
+  CHECK(trace_with(&scene, NULL, 0) == RF_OK);
+  check_colour(&scene.image, THROUGH_LOWER, kEnvironment, 1e-6);
+  CHECK(scene.image.opaque[BESIDE_LOWER] == 0 && scene.image.colour[3 * BESIDE_LOWER] == 0.f);
   /* In front of the glass the plane hides it. */
   make_plane(&back, 2.0, 0.0, 0);
-  options.mode = RF_TRACE_TWO_INTERFACE;
-  CHECK(rf_trace_scene(&glass, 1, &wall, 1, &camera, &options, &image) == RF_OK);
-  CHECK(image.hit[THROUGH_LOWER] == 0 && image.opaque[THROUGH_LOWER] == 1);
-  check_colour(&image, THROUGH_LOWER, lower, 0.0);
-  rf_trace_image_free(&image);
+  scene.options.mode = RF_TRACE_TWO_INTERFACE;
+  CHECK(trace_with(&scene, &wall, 1) == RF_OK);
+  CHECK(scene.image.hit[THROUGH_LOWER] == 0 && scene.image.opaque[THROUGH_LOWER] == 1);
+  check_colour(&scene.image, THROUGH_LOWER, lower, 0.0);
+  rf_trace_image_free(&scene.image);
 }
 
 /* A lit plane tilted by 60 degrees: n_z = cos 60 = 0.5 with its own normals, two-sided (the
@@ -220,28 +224,16 @@ static void test_lit_plane(void)
   const double cd[3] = { 0.2, 0.6, 1.0 };
   const float vertex_colours[12] = { 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f,
     0.5f, 0.5f, 0.5f };
-  const double centre[3] = { 0.0, 0.0, 0.0 };
-  const double half[3] = { 0.5, 0.5, 0.5 };
-  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   double expected[3];
-  rft_box box;
+  rft_box_scene scene;
   plane back;
-  rf_mesh glass;
   rf_opaque_mesh wall;
-  rf_camera camera;
-  rf_trace_options options;
-  rf_trace_image image;
   int reversed;
   int c;
-  rft_make_box(&box, centre, half, identity);
-  glass = rft_box_mesh(&box, 1.5, 1);
-  make_camera(&camera);
-  CHECK(rf_trace_options_default(&options) == RF_OK);
-  CHECK(rf_trace_image_alloc(&image, WIDTH, HEIGHT) == RF_OK);
+  make_glass_scene(&scene);
   for (reversed = 0; reversed < 2; ++reversed)
   {
-    make_plane(&back, -2.0, tilt, reversed);
-    wall = plane_mesh(&back);
+    wall = make_wall(&back, -2.0, tilt, reversed);
     wall.material.lighting = 1;
     wall.material.ambient = 0.1;
     wall.material.diffuse = 0.8;
@@ -251,75 +243,62 @@ static void test_lit_plane(void)
     memcpy(wall.material.diffuse_colour, cd, sizeof(cd));
     wall.material.specular_colour[0] = wall.material.specular_colour[1] =
       wall.material.specular_colour[2] = 1.0;
-    CHECK(rf_trace_scene(&glass, 1, &wall, 1, &camera, &options, &image) == RF_OK);
+    CHECK(trace_with(&scene, &wall, 1) == RF_OK);
     for (c = 0; c < 3; ++c)
     {
       expected[c] = 0.1 * cd[c] + 0.8 * cd[c] * 0.5 + 0.5 * pow(0.5, 4.0);
     }
-    check_colour(&image, BESIDE_LOWER, expected, 1e-6);
+    check_colour(&scene.image, BESIDE_LOWER, expected, 1e-6);
   }
   /* Interpolated point normals (all +z) and per-vertex colours (all 0.5). */
   make_plane(&back, -2.0, tilt, 0);
   wall.normals = back.normals;
   wall.colour_binding = RF_COLOUR_PER_VERTEX;
   wall.colours = vertex_colours;
-  CHECK(rf_trace_scene(&glass, 1, &wall, 1, &camera, &options, &image) == RF_OK);
+  CHECK(trace_with(&scene, &wall, 1) == RF_OK);
   for (c = 0; c < 3; ++c)
   {
     expected[c] = 0.9 * 0.5 + 0.5;
   }
-  check_colour(&image, BESIDE_LOWER, expected, 1e-6);
-  rf_trace_image_free(&image);
+  check_colour(&scene.image, BESIDE_LOWER, expected, 1e-6);
+  rf_trace_image_free(&scene.image);
 }
 
 static void test_rejected_opaque(void)
 {
-  const double centre[3] = { 0.0, 0.0, 0.0 };
-  const double half[3] = { 0.5, 0.5, 0.5 };
-  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   float colours[6] = { 1.f, 0.f, 0.f, 0.f, 0.f, 1.f };
-  rft_box box;
+  rft_box_scene scene;
   plane back;
-  rf_mesh glass;
   rf_opaque_mesh good;
   rf_opaque_mesh bad;
-  rf_camera camera;
-  rf_trace_options options;
-  rf_trace_image image;
-  rft_make_box(&box, centre, half, identity);
-  glass = rft_box_mesh(&box, 1.5, 1);
-  make_plane(&back, -2.0, 0.0, 0);
-  good = plane_mesh(&back);
-  make_camera(&camera);
-  CHECK(rf_trace_options_default(&options) == RF_OK);
-  CHECK(rf_trace_image_alloc(&image, WIDTH, HEIGHT) == RF_OK);
-  CHECK(rf_trace_scene(&glass, 1, &good, 1, &camera, &options, &image) == RF_OK);
-  CHECK(rf_trace_scene(&glass, 1, NULL, 1, &camera, &options, &image) == RF_ERR_NULL_ARGUMENT);
+  make_glass_scene(&scene);
+  good = make_wall(&back, -2.0, 0.0, 0);
+  CHECK(trace_with(&scene, &good, 1) == RF_OK);
+  CHECK(trace_with(&scene, NULL, 1) == RF_ERR_NULL_ARGUMENT);
   bad = good;
   bad.colour_binding = RF_COLOUR_PER_TRIANGLE;
-  CHECK(rf_trace_scene(&glass, 1, &bad, 1, &camera, &options, &image) == RF_ERR_NULL_ARGUMENT);
+  CHECK(trace_with(&scene, &bad, 1) == RF_ERR_NULL_ARGUMENT);
   bad.colours = colours;
-  CHECK(rf_trace_scene(&glass, 1, &bad, 1, &camera, &options, &image) == RF_OK);
+  CHECK(trace_with(&scene, &bad, 1) == RF_OK);
   colours[2] = 1.5f;
-  CHECK(rf_trace_scene(&glass, 1, &bad, 1, &camera, &options, &image) == RF_REF_ERR_BAD_OPTION);
+  CHECK(trace_with(&scene, &bad, 1) == RF_REF_ERR_BAD_OPTION);
   colours[2] = NAN;
-  CHECK(rf_trace_scene(&glass, 1, &bad, 1, &camera, &options, &image) == RF_ERR_NOT_FINITE);
+  CHECK(trace_with(&scene, &bad, 1) == RF_ERR_NOT_FINITE);
   bad = good;
   bad.colour_binding = (rf_colour_binding)7;
-  CHECK(rf_trace_scene(&glass, 1, &bad, 1, &camera, &options, &image) == RF_REF_ERR_BAD_OPTION);
+  CHECK(trace_with(&scene, &bad, 1) == RF_REF_ERR_BAD_OPTION);
   bad = good;
   bad.material.ambient = -1.0;
-  CHECK(rf_trace_scene(&glass, 1, &bad, 1, &camera, &options, &image) == RF_REF_ERR_BAD_OPTION);
+  CHECK(trace_with(&scene, &bad, 1) == RF_REF_ERR_BAD_OPTION);
   bad.material.ambient = INFINITY;
-  CHECK(rf_trace_scene(&glass, 1, &bad, 1, &camera, &options, &image) == RF_ERR_NOT_FINITE);
+  CHECK(trace_with(&scene, &bad, 1) == RF_ERR_NOT_FINITE);
   bad = good;
   back.triangles[4] = 9;
-  CHECK(rf_trace_scene(&glass, 1, &bad, 1, &camera, &options, &image) ==
-    RF_REF_ERR_INDEX_OUT_OF_RANGE);
+  CHECK(trace_with(&scene, &bad, 1) == RF_REF_ERR_INDEX_OUT_OF_RANGE);
   back.triangles[4] = 2;
   back.positions[1] = NAN;
-  CHECK(rf_trace_scene(&glass, 1, &bad, 1, &camera, &options, &image) == RF_ERR_NOT_FINITE);
-  rf_trace_image_free(&image);
+  CHECK(trace_with(&scene, &bad, 1) == RF_ERR_NOT_FINITE);
+  rf_trace_image_free(&scene.image);
 }
 
 /* VTK's perspective projection (vtkPerspectiveTransform::Perspective): view angle 2 atan(t). */

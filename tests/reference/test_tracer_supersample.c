@@ -66,6 +66,12 @@ static double expected_coverage(int column, int n)
   return (double)inside / n;
 }
 
+/* Parallel camera at the origin looking down -z, half height SCALE. */
+static rf_camera make_camera(void)
+{
+  return rft_parallel_camera(0.0, SCALE, WIDTH, HEIGHT, 0.5, 20.0);
+}
+
 static void run(rf_trace_mode mode, int n)
 {
   const double aspect = (double)WIDTH / HEIGHT;
@@ -73,37 +79,27 @@ static void run(rf_trace_mode mode, int n)
   const double edge = ((EDGE_COLUMN + EDGE_FRACTION) / WIDTH * 2.0 - 1.0) * SCALE * aspect;
   const double centre[3] = { 0.5 * (edge - 50.0), 0.0, -5.0 };
   const double half[3] = { 0.5 * (edge + 50.0), 50.0, 1.0 };
-  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-  rft_box box;
-  rf_mesh mesh;
-  rf_camera camera;
-  rf_trace_options options;
-  rf_trace_image image;
+  rft_box_scene scene;
+  rf_trace_options* const options = &scene.options;
+  const rf_trace_image* const image = &scene.image;
   progress_record progress = { 0, 1, 0.0 };
   double worst_colour = 0.0;
   double worst_coverage = 0.0;
   int i;
   int j;
   int c;
-  rft_make_box(&box, centre, half, identity);
-  mesh = rft_box_mesh(&box, 1.5, 1);
-  rft_identity4(camera.view);
-  rft_ortho(SCALE, aspect, 0.5, 20.0, camera.projection);
-  camera.width = WIDTH;
-  camera.height = HEIGHT;
-  CHECK(rf_trace_options_default(&options) == RF_OK);
-  CHECK(options.samples_per_side == 1 && options.progress == NULL);
-  options.mode = mode;
-  options.environment = constant_environment;
-  options.samples_per_side = n;
+  rft_box_scene_init(&scene, centre, half, NULL, 1.5, make_camera());
+  CHECK(options->samples_per_side == 1 && options->progress == NULL);
+  options->mode = mode;
+  options->environment = constant_environment;
+  options->samples_per_side = n;
   for (c = 0; c < 3; ++c)
   {
-    options.background[c] = background_colour[c];
+    options->background[c] = background_colour[c];
   }
-  options.progress = record_progress;
-  options.progress_user = &progress;
-  CHECK(rf_trace_image_alloc(&image, WIDTH, HEIGHT) == RF_OK);
-  CHECK(rf_trace(&mesh, 1, &camera, &options, &image) == RF_OK);
+  options->progress = record_progress;
+  options->progress_user = &progress;
+  CHECK(rft_box_scene_trace(&scene) == RF_OK);
   for (j = 0; j < HEIGHT; ++j)
   {
     for (i = 0; i < WIDTH; ++i)
@@ -112,14 +108,14 @@ static void run(rf_trace_mode mode, int n)
       const double coverage = expected_coverage(i, n);
       /* With one sample, a pixel without glass is 0 whatever the background. */
       const int centre_hit = (i + 0.5) / WIDTH < (EDGE_COLUMN + EDGE_FRACTION) / WIDTH;
-      worst_coverage = fmax(worst_coverage, fabs(image.coverage[index] - coverage));
-      CHECK(image.hit[index] == centre_hit);
+      worst_coverage = fmax(worst_coverage, fabs(image->coverage[index] - coverage));
+      CHECK(image->hit[index] == centre_hit);
       for (c = 0; c < 3; ++c)
       {
         const double expected = n == 1
           ? (centre_hit ? environment_colour[c] : 0.0)
           : coverage * environment_colour[c] + (1.0 - coverage) * background_colour[c];
-        worst_colour = fmax(worst_colour, fabs(image.colour[3 * index + c] - expected));
+        worst_colour = fmax(worst_colour, fabs(image->colour[3 * index + c] - expected));
       }
     }
   }
@@ -130,36 +126,24 @@ static void run(rf_trace_mode mode, int n)
   CHECK(progress.monotone);
   CHECK(progress.last >= 1.0 - 2.0 / HEIGHT);
   printf("mode %d, %dx%d samples: edge pixel coverage %.3f, worst colour error %.1e\n", (int)mode,
-    n, n, image.coverage[EDGE_COLUMN], worst_colour);
-  rf_trace_image_free(&image);
+    n, n, image->coverage[EDGE_COLUMN], worst_colour);
+  rf_trace_image_free(&scene.image);
 }
 
 static void test_rejected(void)
 {
   const double centre[3] = { 0.0, 0.0, -5.0 };
   const double half[3] = { 1.0, 1.0, 1.0 };
-  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
-  rft_box box;
-  rf_mesh mesh;
-  rf_camera camera;
-  rf_trace_options options;
-  rf_trace_image image;
-  rft_make_box(&box, centre, half, identity);
-  mesh = rft_box_mesh(&box, 1.5, 1);
-  rft_identity4(camera.view);
-  rft_ortho(SCALE, (double)WIDTH / HEIGHT, 0.5, 20.0, camera.projection);
-  camera.width = WIDTH;
-  camera.height = HEIGHT;
-  CHECK(rf_trace_image_alloc(&image, WIDTH, HEIGHT) == RF_OK);
-  CHECK(rf_trace_options_default(&options) == RF_OK);
-  options.samples_per_side = 0;
-  CHECK(rf_trace(&mesh, 1, &camera, &options, &image) == RF_REF_ERR_BAD_OPTION);
-  options.samples_per_side = RF_TRACE_MAX_SAMPLES_PER_SIDE + 1;
-  CHECK(rf_trace(&mesh, 1, &camera, &options, &image) == RF_REF_ERR_BAD_OPTION);
-  options.samples_per_side = RF_TRACE_MAX_SAMPLES_PER_SIDE;
-  options.background[1] = NAN;
-  CHECK(rf_trace(&mesh, 1, &camera, &options, &image) == RF_ERR_NOT_FINITE);
-  rf_trace_image_free(&image);
+  rft_box_scene scene;
+  rft_box_scene_init(&scene, centre, half, NULL, 1.5, make_camera());
+  scene.options.samples_per_side = 0;
+  CHECK(rft_box_scene_trace(&scene) == RF_REF_ERR_BAD_OPTION);
+  scene.options.samples_per_side = RF_TRACE_MAX_SAMPLES_PER_SIDE + 1;
+  CHECK(rft_box_scene_trace(&scene) == RF_REF_ERR_BAD_OPTION);
+  scene.options.samples_per_side = RF_TRACE_MAX_SAMPLES_PER_SIDE;
+  scene.options.background[1] = NAN;
+  CHECK(rft_box_scene_trace(&scene) == RF_ERR_NOT_FINITE);
+  rf_trace_image_free(&scene.image);
 }
 
 int main(void)

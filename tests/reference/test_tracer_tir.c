@@ -50,7 +50,6 @@ static void run_case(const tir_case* tc)
 {
   const double centre[3] = { 0.0, 0.0, 0.0 };
   const double half[3] = { 1.0, 1.0, 1.0 };
-  const double identity[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   const double ti = tc->angle * RFT_DEG;
   const double tt = rft_snell(ti, 1.0, IOR);
   const rf_vec3 d = rf_vec3_make(sin(ti), 0.0, -cos(ti));
@@ -61,33 +60,25 @@ static void run_case(const tir_case* tc)
   const rf_vec3 t1_mirrored = rf_vec3_make(-sin(tt), 0.0, -cos(tt));
   const rf_vec3 grazing = rf_vec3_make(0.0, 0.0, -1.0);
   const rf_vec3 leaving = rf_vec3_make(-sin(ti), 0.0, -cos(ti));
-  rft_box box;
-  rf_mesh mesh;
-  rf_camera camera;
-  rf_trace_options options;
-  rf_trace_image image;
-  double worst_p = 0.0;
-  double worst_angle = 0.0;
-  double worst_length = 0.0;
-  double worst_colour = 0.0;
-  int flags_wrong = 0;
-  int checked = 0;
+  rft_box_scene scene;
+  const rf_trace_image* const image = &scene.image;
+  const double* const view = scene.camera.view;
+  rft_pixel_errors worst = { 0, 0, 0.0, 0.0, 0.0, 0.0 };
   int i;
   int j;
 
-  rft_make_box(&box, centre, half, identity);
-  mesh = rft_box_mesh(&box, IOR, tc->normals);
-  rft_look_along(eye, d, up, camera.view);
-  rft_ortho(SCALE, (double)WIDTH / HEIGHT, NEAR_D, FAR_D, camera.projection);
-  camera.width = WIDTH;
-  camera.height = HEIGHT;
-  CHECK(rf_trace_options_default(&options) == RF_OK);
-  options.mode = tc->mode;
-  options.tir_clamp = tc->tir_clamp;
-  options.fresnel = 0;
-  options.environment = direction_colour;
-  CHECK(rf_trace_image_alloc(&image, WIDTH, HEIGHT) == RF_OK);
-  CHECK(rf_trace(&mesh, 1, &camera, &options, &image) == RF_OK);
+  rft_box_scene_init(&scene, centre, half, NULL, IOR,
+    rft_parallel_camera(0.0, SCALE, WIDTH, HEIGHT, NEAR_D, FAR_D));
+  rft_look_along(eye, d, up, scene.camera.view); /* the eye is on -d, not on +z */
+  if (!tc->normals)
+  {
+    scene.glass.normals = NULL; /* geometric normals */
+  }
+  scene.options.mode = tc->mode;
+  scene.options.tir_clamp = tc->tir_clamp;
+  scene.options.fresnel = 0;
+  scene.options.environment = direction_colour;
+  CHECK(rft_box_scene_trace(&scene) == RF_OK);
 
   for (j = 0; j < HEIGHT; ++j)
   {
@@ -124,16 +115,20 @@ static void run_case(const tir_case* tc)
         length = rft_distance(pa, p1);
         bounces = 2;
       }
-      flags_wrong += !(image.hit[k] == 1 && image.tir[k] == 1 && image.bounces[k] == bounces);
-      worst_p = fmax(worst_p, rft_distance(rft_load(image.p1, k), rft_to_view_point(camera.view, p1)));
-      worst_p = fmax(worst_p, rft_distance(rft_load(image.p2, k), rft_to_view_point(camera.view, p2)));
-      worst_angle = fmax(worst_angle, rft_angle_deg(rft_load(image.t2, k), rft_to_view_dir(camera.view, t2)));
-      worst_length = fmax(worst_length, fabs(image.thickness[k] - length));
+      worst.flags_wrong +=
+        !(image->hit[k] == 1 && image->tir[k] == 1 && image->bounces[k] == bounces);
+      worst.position = fmax(worst.position,
+        rft_distance(rft_load(image->p1, k), rft_to_view_point(view, p1)));
+      worst.position = fmax(worst.position,
+        rft_distance(rft_load(image->p2, k), rft_to_view_point(view, p2)));
+      worst.angle =
+        fmax(worst.angle, rft_angle_deg(rft_load(image->t2, k), rft_to_view_dir(view, t2)));
+      worst.length = fmax(worst.length, fabs(image->thickness[k] - length));
       /* No Fresnel split: all light follows this path, into env(t2) in world space. */
-      worst_colour = fmax(worst_colour, fabs(image.colour[3 * k + 0] - 0.5 * (t2.x + 1.0)));
-      worst_colour = fmax(worst_colour, fabs(image.colour[3 * k + 1] - 0.5 * (t2.y + 1.0)));
-      worst_colour = fmax(worst_colour, fabs(image.colour[3 * k + 2] - 0.5 * (t2.z + 1.0)));
-      ++checked;
+      worst.colour = fmax(worst.colour, fabs(image->colour[3 * k + 0] - 0.5 * (t2.x + 1.0)));
+      worst.colour = fmax(worst.colour, fabs(image->colour[3 * k + 1] - 0.5 * (t2.y + 1.0)));
+      worst.colour = fmax(worst.colour, fabs(image->colour[3 * k + 2] - 0.5 * (t2.z + 1.0)));
+      ++worst.checked;
     }
   }
   printf("cube TIR, theta_i %.0f deg (theta_t %.2f, incidence on the side %.2f > critical "
@@ -142,15 +137,15 @@ static void run_case(const tir_case* tc)
     tc->angle, tt / RFT_DEG, 90.0 - tt / RFT_DEG, asin(1.0 / IOR) / RFT_DEG,
     tc->mode == RF_TRACE_FULL ? "full" : "two-interface",
     tc->mode == RF_TRACE_FULL ? "" : (tc->tir_clamp ? " TIR_CLAMP" : " TIR_REFLECT"),
-    tc->normals ? "vertex" : "geometric", checked, flags_wrong, worst_p, worst_angle,
-    worst_length, worst_colour);
-  CHECK(checked > 150);
-  CHECK(flags_wrong == 0);
-  CHECK(worst_p < 1e-5);
-  CHECK(worst_angle < 1e-4);
-  CHECK(worst_length < 1e-5);
-  CHECK(worst_colour < 1e-6);
-  rf_trace_image_free(&image);
+    tc->normals ? "vertex" : "geometric", worst.checked, worst.flags_wrong, worst.position,
+    worst.angle, worst.length, worst.colour);
+  CHECK(worst.checked > 150);
+  CHECK(worst.flags_wrong == 0);
+  CHECK(worst.position < 1e-5);
+  CHECK(worst.angle < 1e-4);
+  CHECK(worst.length < 1e-5);
+  CHECK(worst.colour < 1e-6);
+  rf_trace_image_free(&scene.image);
 }
 
 int main(void)

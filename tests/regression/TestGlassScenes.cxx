@@ -1,10 +1,10 @@
 // VTK regression-image tests of the glass: TestGlassScenes CASE -V baseline.png -T outdir
 // Each case also asserts what the picture must show (a test that cannot fail is a defect).
+#include "rfTestIsosurface.h"
 #include "rfTestScene.h"
 #include "vtkISRDistanceFilter.h"
 #include "vtkMetaballsSource.h"
 
-#include <vtkFlyingEdges3D.h>
 #include <vtkRegressionTestImage.h>
 #include <vtkTesting.h>
 
@@ -58,11 +58,7 @@ int TorusCase(int argc, char* argv[])
 int IsosurfaceCase(int argc, char* argv[])
 {
   vtkNew<vtkMetaballsSource> blobs;
-  blobs->SetSampleDimensions(40);
-  vtkNew<vtkFlyingEdges3D> surface;
-  surface->SetInputConnection(blobs->GetOutputPort());
-  surface->SetValue(0, blobs->GetIsoValue());
-  surface->ComputeNormalsOn();
+  auto surface = rftest::IsosurfaceOf(blobs.Get());
   auto actor = rftest::ActorFor(surface->GetOutputPort());
   rftest::MakeRefractingGlass(actor, 1.5);
   rftest::GlassView view(kSize, kSize);

@@ -28,6 +28,7 @@
 #include "rf_metrics.h"
 
 #include "rfReferenceScene.h"
+#include "rfTestPNG.h"
 #include "rfTestScene.h"
 #include "rf_require.h"
 
@@ -38,7 +39,6 @@
 #include <vtkCubeSource.h>
 #include <vtkDataArray.h>
 #include <vtkLineSource.h>
-#include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkTubeFilter.h>
 #include <vtkPoints.h>
@@ -474,14 +474,6 @@ vtkSmartPointer<vtkActor> Axis(const double from[3], const double to[3], double 
 }
 
 
-void WritePNG(vtkImageData* image, const std::string& path)
-{
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(image);
-  writer->SetFileName(path.c_str());
-  writer->Write();
-  std::printf("reference_ng: wrote %s\n", path.c_str());
-}
 
 int ReferenceNG(const std::string& outDir)
 {
@@ -600,10 +592,10 @@ int ReferenceNG(const std::string& outDir)
       }
     }
   }
-  WritePNG(difference, outDir + "/TestGlassInScene_reference_ng_difference.png");
-  WritePNG(picture, outDir + "/TestGlassInScene_reference_ng_pass.png");
-  WritePNG(withoutScene, outDir + "/TestGlassInScene_reference_ng_pass_no_scene.png");
-  WritePNG(traced, outDir + "/TestGlassInScene_reference_ng_reference.png");
+  rftest::WritePNG(difference, outDir + "/TestGlassInScene_reference_ng_difference.png");
+  rftest::WritePNG(picture, outDir + "/TestGlassInScene_reference_ng_pass.png");
+  rftest::WritePNG(withoutScene, outDir + "/TestGlassInScene_reference_ng_pass_no_scene.png");
+  rftest::WritePNG(traced, outDir + "/TestGlassInScene_reference_ng_reference.png");
 
   // Thresholds: see the measured figures above them.
   RF_REQUIRE(psnrOn >= kNGMinPSNR, "the refracted scene is %.2f dB from the reference (at "

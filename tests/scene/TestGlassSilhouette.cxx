@@ -16,6 +16,7 @@
 // either (the pictures still must agree).
 #include "vtkRefractionPass.h"
 
+#include "rfTestPNG.h"
 #include "rfTestScene.h"
 #include "rf_require.h"
 
@@ -26,7 +27,6 @@
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkOpenGLTexture.h>
-#include <vtkPNGWriter.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
@@ -56,13 +56,6 @@ int CountIntermediate(vtkImageData* image)
   return count;
 }
 
-void WritePNG(vtkImageData* image, const std::string& path)
-{
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(image);
-  writer->SetFileName(path.c_str());
-  writer->Write();
-}
 
 // A cube map of one colour: the glass refracts and reflects nothing but it.
 vtkSmartPointer<vtkTexture> ConstantCube(double value)
@@ -116,8 +109,8 @@ int Silhouette(const std::string& name, const std::string& outDir)
   auto pixelwise = rftest::Grab(window);
   const std::string prefix =
     outDir + "/silhouette_" + name + "_" + std::to_string(window->GetMultiSamples()) + "x_";
-  WritePNG(plain, prefix + "opaque.png");
-  WritePNG(drawn, prefix + "glass.png");
+  rftest::WritePNG(plain, prefix + "opaque.png");
+  rftest::WritePNG(drawn, prefix + "glass.png");
 
   const int opaqueCount = CountIntermediate(plain);
   const int glassCount = CountIntermediate(drawn);
@@ -192,9 +185,9 @@ int Inside(const std::string& outDir)
   pass->DebugOutputOn();
   window->Render();
   auto pixels = rftest::Grab(window);
-  WritePNG(samples, outDir + "/silhouette_inside_" + std::to_string(window->GetMultiSamples()) +
+  rftest::WritePNG(samples, outDir + "/silhouette_inside_" + std::to_string(window->GetMultiSamples()) +
       "x_samples.png");
-  WritePNG(pixels, outDir + "/silhouette_inside_" + std::to_string(window->GetMultiSamples()) +
+  rftest::WritePNG(pixels, outDir + "/silhouette_inside_" + std::to_string(window->GetMultiSamples()) +
       "x_pixels.png");
   vtkDataArray* flags = pass->GetDebugImage()->GetPointData()->GetArray("Flags");
   RF_REQUIRE(flags && flags->GetNumberOfTuples() == kSize * kSize, "no debug flags");

@@ -2,11 +2,11 @@
 // mesh, and a topology change between two frames.
 #include "rfStabilityCases.h"
 #include "rfStabilityScene.h"
+#include "rfTestIsosurface.h"
 
 #include "vtkMetaballsSource.h"
 
 #include <vtkCellArray.h>
-#include <vtkFlyingEdges3D.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataConnectivityFilter.h>
@@ -115,11 +115,7 @@ namespace
 vtkSmartPointer<vtkPolyData> Metaballs(double time)
 {
   vtkNew<vtkMetaballsSource> blobs;
-  blobs->SetSampleDimensions(40);
-  vtkNew<vtkFlyingEdges3D> surface;
-  surface->SetInputConnection(blobs->GetOutputPort());
-  surface->SetValue(0, blobs->GetIsoValue());
-  surface->ComputeNormalsOn();
+  auto surface = rftest::IsosurfaceOf(blobs.Get());
   surface->UpdateTimeStep(time);
   auto poly = vtkSmartPointer<vtkPolyData>::New();
   poly->DeepCopy(surface->GetOutput());

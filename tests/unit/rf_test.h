@@ -1,8 +1,11 @@
-/* rf_test.h: a minimal test harness for the C core's unit tests.
+/* rf_test.h: a minimal test harness for the C core's unit tests, and the closed forms that
+ * both they and the reference tracer's tests use.
  * Each test program includes it once; the failure counters are file-scope
  * statics so every program has its own. */
 #ifndef RF_TEST_H
 #define RF_TEST_H
+
+#include "rf_vec3.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -45,5 +48,23 @@ static inline int rf_test_summary(const char* program)
   return rf_test_failures == 0 ? 0 : 1;
 }
 #define RF_TEST_SUMMARY() rf_test_summary(__FILE__)
+
+/* Snell's law written out here, independently of rf_optics.c (the code under test uses that),
+ * so that a shared mistake cannot make a test pass. I and N unit, N against I, eta = n1 / n2.
+ * Gives the refracted direction, normalized; under total internal reflection returns 0 and
+ * gives the mirror direction. */
+static inline int rf_test_snell(rf_vec3 I, rf_vec3 N, double eta, rf_vec3* out)
+{
+  const double c = -rf_vec3_dot(I, N);
+  const double k = 1.0 - eta * eta * (1.0 - c * c);
+  if (k < 0.0)
+  {
+    *out = rf_vec3_add(I, rf_vec3_scale(N, 2.0 * c));
+    return 0;
+  }
+  *out =
+    rf_vec3_normalize(rf_vec3_add(rf_vec3_scale(I, eta), rf_vec3_scale(N, eta * c - sqrt(k))));
+  return 1;
+}
 
 #endif /* RF_TEST_H */

@@ -249,19 +249,18 @@ static void test_degenerate_inputs(void)
   rf_dir_segment seg;
   rf_dir_segment untouched;
   const rf_vec3 nan_vector = { NAN, 0.0, -1.0 };
+  /* T1 parallel to the image plane (S and E at infinity), zero, or toward the camera. */
+  const rf_vec3 degenerate_T1[] = { { 1.0, 0.0, 0.0 }, { 1.0, 0.0, 1e-13 }, { 0.0, 0.0, 0.0 },
+    { 0.0, 0.6, 0.8 } };
+  size_t d;
   make_projection(projection);
   memset(&seg, 0, sizeof(seg));
   seg.k1 = 123.0; /* sentinel: errors must leave *seg alone */
-  /* T1 parallel to the image plane: S and E at infinity. */
-  CHECK(rf_dir_segment_init(hand_P1, rf_vec3_make(1.0, 0.0, 0.0), 4.0, 6.0, projection, &seg) ==
-    RF_ERR_DEGENERATE_DIRECTION);
-  CHECK(rf_dir_segment_init(hand_P1, rf_vec3_make(1.0, 0.0, 1e-13), 4.0, 6.0, projection, &seg) ==
-    RF_ERR_DEGENERATE_DIRECTION);
-  CHECK(rf_dir_segment_init(hand_P1, rf_vec3_make(0.0, 0.0, 0.0), 4.0, 6.0, projection, &seg) ==
-    RF_ERR_DEGENERATE_DIRECTION);
-  /* T1 toward the camera. */
-  CHECK(rf_dir_segment_init(hand_P1, rf_vec3_make(0.0, 0.6, 0.8), 4.0, 6.0, projection, &seg) ==
-    RF_ERR_DEGENERATE_DIRECTION);
+  for (d = 0; d < sizeof(degenerate_T1) / sizeof(degenerate_T1[0]); ++d)
+  {
+    CHECK(rf_dir_segment_init(hand_P1, degenerate_T1[d], 4.0, 6.0, projection, &seg) ==
+      RF_ERR_DEGENERATE_DIRECTION);
+  }
   /* Empty and invalid ranges. */
   CHECK(rf_dir_segment_init(hand_P1, hand_T1, 5.0, 5.0, projection, &seg) == RF_ERR_EMPTY_RANGE);
   CHECK(rf_dir_segment_init(hand_P1, hand_T1, 6.0, 4.0, projection, &seg) == RF_ERR_EMPTY_RANGE);
@@ -356,19 +355,35 @@ static void test_secant_refinement(void)
 
 /* ---- rf_dir_search: the whole exit search the shader runs (rfk_dir_search) ---- */
 
+/* The hand-worked ray on a 64 x 64 map; the options not named (adaptive, secant, parallel)
+ * off. */
 static rf_dir_search_input hand_search_input(int steps)
 {
-  rf_dir_search_input in;
-  memset(&in, 0, sizeof(in));
-  in.P1 = hand_P1;
-  in.T1 = hand_T1;
-  in.depth_min = hand_depth_min;
-  in.depth_max = hand_depth_max;
+  rf_dir_search_input in = { .P1 = hand_P1, .T1 = hand_T1, .depth_min = hand_depth_min,
+    .depth_max = hand_depth_max, .viewport = { 64, 64 }, .steps = steps };
   make_projection(in.projection);
-  in.viewport[0] = 64;
-  in.viewport[1] = 64;
-  in.steps = steps;
   return in;
+}
+
+/* The paper's search (rf_dir_cbs on the hand segment) and the shader's (rf_dir_search of the
+ * hand ray), each `steps` steps over the same depth map. */
+typedef struct paper_and_shader
+{
+  rf_vec3 paper_P2;
+  double paper_tc[2];
+  double paper_beta;
+  rf_dir_search_result shader;
+} paper_and_shader;
+
+static paper_and_shader search_both_ways(const rf_dir_segment* seg, int steps,
+  disc_depth_map* map)
+{
+  const rf_dir_search_input in = hand_search_input(steps);
+  paper_and_shader both;
+  CHECK(rf_dir_cbs(seg, steps, sample_disc, map, &both.paper_P2, both.paper_tc,
+          &both.paper_beta) == RF_OK);
+  CHECK(rf_dir_search(&in, sample_disc, map, &both.shader) == RF_OK);
+  return both;
 }
 
 static double sample_constant(void* context, const double tc[2])
@@ -386,19 +401,13 @@ static void test_search_matches_the_paper_inside(void)
   for (c = 0; c <= 10; ++c)
   {
     disc_depth_map map = { { 0.5, 0.5 }, 0.4, 5.3, 0, { 0.0, 0.0 } };
-    const rf_dir_search_input in = hand_search_input(c);
-    rf_dir_search_result out;
-    rf_vec3 P2;
-    double tc[2];
-    double beta;
-    CHECK(rf_dir_cbs(&seg, c, sample_disc, &map, &P2, tc, &beta) == RF_OK);
-    CHECK(rf_dir_search(&in, sample_disc, &map, &out) == RF_OK);
-    CHECK(out.found == 1);
-    CHECK_NEAR(out.P2.x, P2.x, 1e-12);
-    CHECK_NEAR(out.P2.y, P2.y, 1e-12);
-    CHECK_NEAR(out.P2.z, P2.z, 1e-12);
-    CHECK_NEAR(out.tc[0], tc[0], 1e-12);
-    CHECK_NEAR(out.tc[1], tc[1], 1e-12);
+    const paper_and_shader both = search_both_ways(&seg, c, &map);
+    CHECK(both.shader.found == 1);
+    CHECK_NEAR(both.shader.P2.x, both.paper_P2.x, 1e-12);
+    CHECK_NEAR(both.shader.P2.y, both.paper_P2.y, 1e-12);
+    CHECK_NEAR(both.shader.P2.z, both.paper_P2.z, 1e-12);
+    CHECK_NEAR(both.shader.tc[0], both.paper_tc[0], 1e-12);
+    CHECK_NEAR(both.shader.tc[1], both.paper_tc[1], 1e-12);
   }
 }
 
@@ -471,19 +480,12 @@ static void test_search_from_P1_when_S_is_outside(void)
   for (c = 1; c <= 8; ++c)
   {
     disc_depth_map map = { { 0.525, 0.45 }, 0.1, 5.9, 0, { 0.0, 0.0 } };
-    const rf_dir_search_input in = hand_search_input(c);
-    rf_dir_search_result out;
-    rf_vec3 P2;
-    double tc[2];
-    double beta;
-    rf_vec3 along;
-    CHECK(rf_dir_cbs(&seg, c, sample_disc, &map, &P2, tc, &beta) == RF_OK);
-    CHECK(!inside_disc(&map, tc));
-    CHECK(rf_dir_search(&in, sample_disc, &map, &out) == RF_OK);
-    CHECK(inside_disc(&map, out.tc));
-    CHECK(-out.P2.z < 5.9);
+    const paper_and_shader both = search_both_ways(&seg, c, &map);
+    const rf_vec3 along = rf_vec3_sub(both.shader.P2, hand_P1);
+    CHECK(!inside_disc(&map, both.paper_tc));
+    CHECK(inside_disc(&map, both.shader.tc));
+    CHECK(-both.shader.P2.z < 5.9);
     /* on the ray, ahead of P1, and off it once there are steps to take */
-    along = rf_vec3_sub(out.P2, hand_P1);
     CHECK_NEAR(rf_vec3_length(rf_vec3_cross(along, hand_T1)), 0.0, 1e-12);
     CHECK(rf_vec3_dot(along, hand_T1) >= 0.0);
     moved += rf_vec3_dot(along, hand_T1) > 0.0 ? 1 : 0;

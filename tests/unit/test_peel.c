@@ -31,6 +31,7 @@ typedef struct scene
   double inverse_focal; /* tan(fovy / 2) */
 } scene;
 
+/* The scene's camera: a 30 degree perspective at the origin looking down -z. */
 static void make_camera(scene* s)
 {
   const double near_plane = 0.1;
@@ -47,6 +48,23 @@ static void make_camera(scene* s)
   s->projection[11] = 2.0 * far_plane * near_plane / (near_plane - far_plane);
   s->projection[14] = -1.0;
   s->inverse_focal = 1.0 / f;
+}
+
+/* A scene of `count` spheres (MAX_SPHERES at most) seen by make_camera's camera, the index of
+ * material m in ior[m]. */
+static void make_scene(scene* s, const sphere* spheres, int count, const double ior[MAX_SPHERES])
+{
+  int i;
+  make_camera(s);
+  s->count = count;
+  for (i = 0; i < count; ++i)
+  {
+    s->spheres[i] = spheres[i];
+  }
+  for (i = 0; i < MAX_SPHERES; ++i)
+  {
+    s->ior[i] = ior[i];
+  }
 }
 
 /* The line of sight through texture coordinates tc (the nearest texel's centre). */
@@ -139,20 +157,6 @@ static void sample_layers(void* context, const double tc[2], int layer, double r
   }
 }
 
-/* Snell's law; false under TIR (then *out is the mirror direction). */
-static int snell(rf_vec3 I, rf_vec3 N, double eta, rf_vec3* out)
-{
-  const double c = -rf_vec3_dot(I, N);
-  const double k = 1.0 - eta * eta * (1.0 - c * c);
-  if (k < 0.0)
-  {
-    *out = rf_vec3_add(I, rf_vec3_scale(N, 2.0 * c));
-    return 0;
-  }
-  *out = rf_vec3_normalize(rf_vec3_add(rf_vec3_scale(I, eta), rf_vec3_scale(N, eta * c - sqrt(k))));
-  return 1;
-}
-
 /* The exact path from the entry point: the medium is the innermost sphere the ray is inside.
  * Returns the direction the ray leaves with (after at most `bounces` reflections) and the
  * last surface point; *entry the first hit, *entered its material, *N1 its outward normal. */
@@ -222,7 +226,7 @@ static int exact_trace(const scene* s, rf_vec3 D, int bounces, rf_vec3* P1, rf_v
     {
       const rf_vec3 facing = rf_vec3_dot(D, outward) < 0.0 ? outward : rf_vec3_scale(outward, -1.0);
       rf_vec3 next;
-      if (!snell(D, facing, n_here / n_there, &next))
+      if (!rf_test_snell(D, facing, n_here / n_there, &next))
       {
         inside[which] = !inside[which];
         if (reflections >= bounces)
@@ -285,7 +289,7 @@ static comparison compare(const scene* s, int layers, int bounces, int minimum_h
       {
         continue;
       }
-      snell(D, N1, 1.0 / s->ior[material], &T1);
+      rf_test_snell(D, N1, 1.0 / s->ior[material], &T1);
       input.P1 = P1;
       input.T1 = T1;
       input.material = material;
@@ -327,25 +331,30 @@ static comparison compare(const scene* s, int layers, int bounces, int minimum_h
   return result;
 }
 
+/* What a comparison of a scene the trace handles must show: no failed call, more than
+ * `min_rays` rays, at least `close_share` of them within 2 degrees of the exact exit, and a
+ * median error under `max_median` degrees. */
+static void check_close(const comparison* c, int min_rays, double close_share, double max_median)
+{
+  CHECK(c->failures == 0);
+  CHECK(c->rays > min_rays);
+  CHECK(c->close >= close_share * c->rays);
+  CHECK(c->median < max_median);
+}
+
 static void test_single_sphere(void)
 {
+  const sphere ball = { { 0.0, 0.0, -6.0 }, 1.0, 0 };
+  const double ior[MAX_SPHERES] = { 1.5, 1.5, 1.5 };
   scene s;
   comparison c;
-  make_camera(&s);
-  s.count = 1;
-  s.spheres[0].centre = rf_vec3_make(0.0, 0.0, -6.0);
-  s.spheres[0].radius = 1.0;
-  s.spheres[0].material = 0;
-  s.ior[0] = s.ior[1] = s.ior[2] = 1.5;
+  make_scene(&s, &ball, 1, ior);
   printf("one ball, IOR 1.5:\n");
   c = compare(&s, 2, 0, 2);
-  CHECK(c.failures == 0);
   /* What is left is the layers' texels (the ball turns by 1.9 degrees per texel here): with
    * the normal read at the nearest texel the median was 0.67 degrees; filtered over the four
    * texels around the exit (rfk_peel_normal) it is 0.03. */
-  CHECK(c.rays > 500);
-  CHECK(c.close >= 0.99 * c.rays);
-  CHECK(c.median < 0.1);
+  check_close(&c, 500, 0.99, 0.1);
   /* K beyond the layers the scene has changes nothing (deep peeling on a convex shape). */
   {
     const comparison deep = compare(&s, 8, 4, 2);
@@ -356,52 +365,30 @@ static void test_single_sphere(void)
 
 static void test_nested(void)
 {
+  const sphere balls[2] = { { { 0.0, 0.0, -6.0 }, 1.2, 0 }, { { 0.1, 0.0, -6.0 }, 0.6, 1 } };
+  const double ior[MAX_SPHERES] = { 1.33, 1.8, 1.0 };
   scene s;
   comparison two;
   comparison four;
-  make_camera(&s);
-  s.count = 2;
-  s.spheres[0].centre = rf_vec3_make(0.0, 0.0, -6.0);
-  s.spheres[0].radius = 1.2;
-  s.spheres[0].material = 0;
-  s.spheres[1].centre = rf_vec3_make(0.1, 0.0, -6.0);
-  s.spheres[1].radius = 0.6;
-  s.spheres[1].material = 1;
-  s.ior[0] = 1.33;
-  s.ior[1] = 1.8;
-  s.ior[2] = 1.0;
+  make_scene(&s, balls, 2, ior);
   printf("a ball (1.8) inside a ball (1.33), rays through both:\n");
   two = compare(&s, 2, 0, 4);
   four = compare(&s, 4, 0, 4);
-  CHECK(four.failures == 0);
-  CHECK(four.rays > 100);
   /* Two layers cannot see the inner ball; four follow the ray through it. */
-  CHECK(four.close >= 0.8 * four.rays);
-  CHECK(four.median < 0.3);
+  check_close(&four, 100, 0.8, 0.3);
   CHECK(two.close < 0.05 * two.rays);
 }
 
 static void test_overlapping(void)
 {
+  const sphere balls[2] = { { { -0.5, 0.0, -6.0 }, 0.6, 0 }, { { 0.3, 0.2, -8.0 }, 0.8, 1 } };
+  const double ior[MAX_SPHERES] = { 1.5, 1.2, 1.0 };
   scene s;
   comparison c;
-  make_camera(&s);
-  s.count = 2;
-  s.spheres[0].centre = rf_vec3_make(-0.5, 0.0, -6.0);
-  s.spheres[0].radius = 0.6;
-  s.spheres[0].material = 0;
-  s.spheres[1].centre = rf_vec3_make(0.3, 0.2, -8.0);
-  s.spheres[1].radius = 0.8;
-  s.spheres[1].material = 1;
-  s.ior[0] = 1.5;
-  s.ior[1] = 1.2;
-  s.ior[2] = 1.0;
+  make_scene(&s, balls, 2, ior);
   printf("two balls one behind the other, rays through both:\n");
   c = compare(&s, 4, 0, 4);
-  CHECK(c.failures == 0);
-  CHECK(c.rays > 100);
-  CHECK(c.close >= 0.8 * c.rays);
-  CHECK(c.median < 0.5);
+  check_close(&c, 100, 0.8, 0.5);
 }
 
 static void test_bad_input(void)

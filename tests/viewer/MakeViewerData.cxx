@@ -19,7 +19,7 @@
 
 #include <vtkAppendFilter.h>
 #include <vtkConeSource.h>
-#include <vtkFlyingEdges3D.h>
+#include "rfTestIsosurface.h"
 #include <vtkPLYWriter.h>
 #include <vtkPolyDataWriter.h>
 #include <vtkSTLWriter.h>
@@ -134,11 +134,7 @@ int main(int argc, char* argv[])
   collection += "  </Collection>\n</VTKFile>\n";
 
   vtkNew<vtkWaveEquationSource> waves;
-  waves->SetSampleDimensions(40);
-  vtkNew<vtkFlyingEdges3D> surface;
-  surface->SetInputConnection(waves->GetOutputPort());
-  surface->SetValue(0, waves->GetIsoValue());
-  surface->ComputeNormalsOn();
+  auto surface = rftest::IsosurfaceOf(waves.Get());
   polyWriter->SetInputConnection(surface->GetOutputPort());
   for (int k = 0; k < 4; ++k)
   {

@@ -276,7 +276,11 @@ int main(int argc, char* argv[])
         !Trace(renderer, pass, size, vtkRefractionReference::TWO_INTERFACE, ss,
           where + "two" + ssLabel, truth.TwoSS) ||
         !Trace(renderer, pass, size, vtkRefractionReference::FULL, ss, where + "full" + ssLabel,
-          truth.FullSS))
+          truth.FullSS) ||
+        (options.Convergence &&
+          !Trace(renderer, pass, size, vtkRefractionReference::FULL, 2 * ss,
+            where + "full " + std::to_string(2 * ss) + "x" + std::to_string(2 * ss),
+            truth.FullDoubleSS)))
       {
         std::fprintf(stderr, "%s: the reference could not trace the scene; skipped\n",
           scene.Name.c_str());
@@ -302,13 +306,23 @@ int main(int argc, char* argv[])
           debug->DeepCopy(pass->GetDebugImage());
           window->Render();
           const std::vector<float> colour = GrabColour(window);
+          // The one-ray references are held against one lookup direction per pixel too; the
+          // supersampled ones against the picture as the row draws it.
+          std::vector<float> pointColour = colour;
+          if (pass->GetFilteredLookups())
+          {
+            pass->FilteredLookupsOff();
+            window->Render();
+            pointColour = GrabColour(window);
+            pass->FilteredLookupsOn();
+          }
           row.BytesPerPixel =
             static_cast<double>(pass->GetTextureBytes()) / (static_cast<double>(size) * size);
           auto* distances = vtkISRDistanceFilter::SafeDownCast(scene.Mesh);
           row.PrecomputeMs = setting.Method == "ISR" && distances
             ? distances->GetLastComputeSeconds() * 1e3
             : setting.Method == "SH" ? scene.SHSeconds * 1e3 : 0.0;
-          Measure(row, colour, debug, truth, size);
+          Measure(row, colour, pointColour, debug, truth, size);
           if (options.Dump)
           {
             std::string label = setting.Label();

@@ -69,6 +69,9 @@ std::vector<Column> Columns(int stageCount)
   c.push_back({ "multisample_silhouette",
     [](const Row& r) { return std::string(r.Config.PixelComposite ? "0" : "1"); },
     [](Row& r, const std::string& v) { r.Config.PixelComposite = v == "0"; } });
+  c.push_back({ "filtered_lookups",
+    [](const Row& r) { return std::string(r.Config.PointLookups ? "0" : "1"); },
+    [](Row& r, const std::string& v) { r.Config.PointLookups = v == "0"; } });
   c.push_back({ "repeats", [](const Row& r) { return std::to_string(r.Repeats); },
     [](Row& r, const std::string& v) { r.Repeats = std::atoi(v.c_str()); } });
   number("cpu_ms", [](Row& r) -> double& { return r.CpuMs.Median; });
@@ -106,8 +109,11 @@ std::vector<Column> Columns(int stageCount)
     number("ssim_" + suffix, [member](Row& r) -> double& { return (r.*member).Ssim; });
     number("psnr_" + suffix + "_tir", [member](Row& r) -> double& { return (r.*member).PsnrTir; });
     number("psnr_" + suffix + "_rest", [member](Row& r) -> double& { return (r.*member).PsnrRest; });
+    number("psnr_" + suffix + "_rim", [member](Row& r) -> double& { return (r.*member).PsnrRim; });
   }
   number("psnr_model_full_ss", [](Row& r) -> double& { return r.PsnrModelFullSS; });
+  number("brightness_full_ss", [](Row& r) -> double& { return r.BrightnessFullSS; });
+  number("ref_ss_convergence_psnr", [](Row& r) -> double& { return r.PsnrSSConvergence; });
   number("t2_deg_mean", [](Row& r) -> double& { return r.AngMean; });
   number("t2_deg_p95", [](Row& r) -> double& { return r.AngP95; });
   number("t2_deg_max", [](Row& r) -> double& { return r.AngMax; });

@@ -88,6 +88,9 @@ bool Parse(int argc, char* argv[], Options& o)
     "64x64, sphere and torus, 5 frames, every method once: the ctest smoke run.");
   args.AddBooleanArgument("--x11", &o.X11, "Render through an X window instead of EGL.");
   args.AddBooleanArgument("--dump", &o.Dump, "Also write every picture and reference as PNG.");
+  args.AddBooleanArgument("--convergence", &o.Convergence,
+    "Also trace the full reference at twice --supersample per side and report how far the "
+    "supersampled truth is from it (column ref_ss_convergence_psnr; --supersample 2..8).");
   args.AddBooleanArgument("--help", &help, "Print this help.");
   if (!args.Parse())
   {
@@ -163,6 +166,12 @@ bool Parse(int argc, char* argv[], Options& o)
     std::fprintf(stderr, "--frames (1..10000), --repeats (3..100), --seed (>= 0), "
                          "--supersample (2..16) or --multisamples (0..16): not a number in "
                          "range\n");
+    return false;
+  }
+  if (o.Convergence && o.Supersample > 8)
+  {
+    std::fprintf(stderr, "--convergence traces 2 x --supersample per side: at most 8, not %d\n",
+      o.Supersample);
     return false;
   }
   if (o.Environment != "builtin" && o.Environment != "studio" &&

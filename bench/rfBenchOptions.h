@@ -23,6 +23,7 @@ struct Options
   bool Quick = false;
   bool X11 = false;
   bool Dump = false;
+  bool Convergence = false; // also the full reference at twice the samples per side
   std::string FromCsv;
   std::string Environment = "builtin";
   std::string Bunny = "/usr/share/glmark2/models/bunny.obj";

@@ -82,6 +82,7 @@ bool Trace(vtkRenderer* renderer, vtkRefractionPass* pass, int size, int mode, i
   {
     c = std::min(std::max(c, 0.0f), 1.0f); // what an 8-bit window can show
   }
+  out.Coverage = Floats(image, "Coverage", 1);
   out.P2 = Floats(image, "P2", 3);
   out.T2 = Floats(image, "T2", 3);
   const auto hit = Floats(image, "Hit", 1);
@@ -100,44 +101,75 @@ bool Trace(vtkRenderer* renderer, vtkRefractionPass* pass, int size, int mode, i
 
 namespace
 {
-Errors Compare(const std::vector<float>& colour, const Reference& reference,
-  const std::vector<unsigned char>& mask, const std::vector<unsigned char>& tirMask,
-  const std::vector<unsigned char>& restMask, int size)
+// The pixel subsets a picture is measured on.
+struct Masks
 {
+  std::vector<unsigned char> Glass, Tir, Rest, Rim;
+};
+
+Errors Compare(const std::vector<float>& colour, const Reference& reference, const Masks& m,
+  int size)
+{
+  const std::vector<unsigned char>& mask = m.Glass;
   const size_t n = static_cast<size_t>(size) * size;
   Errors e;
   rf_psnr(colour.data(), reference.Colour.data(), n, 3, mask.data(), &e.Psnr);
   rf_rmse(colour.data(), reference.Colour.data(), n, 3, mask.data(), &e.Rmse);
   rf_ssim(colour.data(), reference.Colour.data(), size, size, 3, mask.data(), &e.Ssim);
   // Left at -1 where there are no such pixels.
-  rf_psnr(colour.data(), reference.Colour.data(), n, 3, tirMask.data(), &e.PsnrTir);
-  rf_psnr(colour.data(), reference.Colour.data(), n, 3, restMask.data(), &e.PsnrRest);
+  rf_psnr(colour.data(), reference.Colour.data(), n, 3, m.Tir.data(), &e.PsnrTir);
+  rf_psnr(colour.data(), reference.Colour.data(), n, 3, m.Rest.data(), &e.PsnrRest);
+  rf_psnr(colour.data(), reference.Colour.data(), n, 3, m.Rim.data(), &e.PsnrRim);
   return e;
+}
+
+// Mean over the masked pixels and channels.
+double MaskedMean(const std::vector<float>& colour, const std::vector<unsigned char>& mask)
+{
+  double sum = 0.0;
+  long count = 0;
+  for (size_t i = 0; i < mask.size() && 3 * i + 2 < colour.size(); ++i)
+  {
+    if (mask[i])
+    {
+      sum += colour[3 * i] + colour[3 * i + 1] + colour[3 * i + 2];
+      count += 3;
+    }
+  }
+  return count ? sum / count : 0.0;
 }
 }
 
 // Errors on the pixels where both the pass and the reference (its pixel centre) see glass;
 // TIR pixels are those where the two-interface reference's ray is totally reflected at the
-// exit.
-void Measure(Row& row, const std::vector<float>& colour, vtkImageData* debug, const Truth& truth,
-  int size)
+// exit, rim pixels those the supersampled full reference's sub-samples cover in part.
+void Measure(Row& row, const std::vector<float>& colour, const std::vector<float>& pointColour,
+  vtkImageData* debug, const Truth& truth, int size)
 {
   const size_t n = static_cast<size_t>(size) * size;
   const Reference& two = truth.Two;
   const auto flags = Floats(debug, "Flags", 1);
   const auto t2 = Floats(debug, "T2", 3);
   const auto p2 = Floats(debug, "P2", 3);
-  std::vector<unsigned char> mask(n, 0), tir(n, 0), refTir(n, 0), rest(n, 0);
+  const std::vector<float>& coverage = truth.FullSS.Coverage;
+  Masks m;
+  std::vector<unsigned char>& mask = m.Glass;
+  mask.assign(n, 0);
+  m.Tir.assign(n, 0);
+  m.Rest.assign(n, 0);
+  m.Rim.assign(n, 0);
+  std::vector<unsigned char> tir(n, 0);
   long count = 0, tirCount = 0;
   for (size_t i = 0; i < n; ++i)
   {
     const bool glass = i < flags.size() && flags[i] > 0.5f;
     mask[i] = glass && two.Hit[i] ? 1 : 0;
     tir[i] = glass && flags[i] > 1.5f ? 1 : 0;
-    refTir[i] = mask[i] && two.Tir[i] ? 1 : 0;
-    rest[i] = mask[i] && !two.Tir[i] ? 1 : 0;
+    m.Tir[i] = mask[i] && two.Tir[i] ? 1 : 0;
+    m.Rest[i] = mask[i] && !two.Tir[i] ? 1 : 0;
+    m.Rim[i] = mask[i] && i < coverage.size() && coverage[i] > 0.0f && coverage[i] < 1.0f;
     count += mask[i];
-    tirCount += refTir[i];
+    tirCount += m.Tir[i];
   }
   row.Pixels = count;
   row.TirPixels = tirCount;
@@ -145,10 +177,17 @@ void Measure(Row& row, const std::vector<float>& colour, vtkImageData* debug, co
   {
     return;
   }
-  row.Two = Compare(colour, truth.Two, mask, refTir, rest, size);
-  row.Full = Compare(colour, truth.Full, mask, refTir, rest, size);
-  row.TwoSS = Compare(colour, truth.TwoSS, mask, refTir, rest, size);
-  row.FullSS = Compare(colour, truth.FullSS, mask, refTir, rest, size);
+  row.Two = Compare(pointColour, truth.Two, m, size);
+  row.Full = Compare(pointColour, truth.Full, m, size);
+  row.TwoSS = Compare(colour, truth.TwoSS, m, size);
+  row.FullSS = Compare(colour, truth.FullSS, m, size);
+  const double truthMean = MaskedMean(truth.FullSS.Colour, mask);
+  row.BrightnessFullSS = truthMean > 0.0 ? MaskedMean(colour, mask) / truthMean : -1.0;
+  if (!truth.FullDoubleSS.Colour.empty())
+  {
+    rf_psnr(truth.FullSS.Colour.data(), truth.FullDoubleSS.Colour.data(), n, 3, two.Hit.data(),
+      &row.PsnrSSConvergence);
+  }
   rf_psnr(truth.TwoSS.Colour.data(), truth.FullSS.Colour.data(), n, 3, mask.data(),
     &row.PsnrModelFullSS);
   rf_error_stats angle{};

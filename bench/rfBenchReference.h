@@ -17,6 +17,7 @@ namespace rfbench
 struct Reference
 {
   std::vector<float> Colour, P2, T2;
+  std::vector<float> Coverage; // share of a pixel's sub-samples that see glass
   std::vector<unsigned char> Hit, Tir;
   double Seconds = 0;
   double Diagonal = 1;
@@ -26,6 +27,7 @@ struct Reference
 struct Truth
 {
   Reference Two, Full, TwoSS, FullSS;
+  Reference FullDoubleSS; // traced with --convergence only: twice FullSS's samples per side
 };
 
 // Traces the renderer's scene as the pass sees it (mode: vtkRefractionReference's, samples
@@ -33,9 +35,11 @@ struct Truth
 bool Trace(vtkRenderer* renderer, vtkRefractionPass* pass, int size, int mode, int samples,
   const std::string& label, Reference& out);
 
-// Fills the row's errors of `colour` (with the pass's debug image) against the references.
-void Measure(Row& row, const std::vector<float>& colour, vtkImageData* debug, const Truth& truth,
-  int size);
+// Fills the row's errors (with the pass's debug image) against the references: of `colour`
+// against the supersampled ones, of `pointColour` (the same with one lookup direction per
+// ray) against the one-ray ones.
+void Measure(Row& row, const std::vector<float>& colour, const std::vector<float>& pointColour,
+  vtkImageData* debug, const Truth& truth, int size);
 }
 
 #endif

@@ -53,11 +53,16 @@ bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
        "reference (depth 8, Fresnel splits, TIR), `full SS` the full reference averaged over "
        "N x N rays per pixel (the anti-aliased truth a camera sees); `model vs full SS` is the "
        "two-interface reference, supersampled too, against `full SS` on the same pixels: the "
-       "best a two-interface method can read there. `AA`: the pass's anti-aliasing "
+       "best a two-interface method can read there. `two` and `full` hold one ray per pixel, so "
+       "the picture held against them looks the environment up along one direction per ray "
+       "(SetFilteredLookups(false)); `full SS` is held against the picture as the row draws "
+       "it (`point`: a row drawn so too). `AA`: the pass's anti-aliasing "
        "(vtkRefractionPass::SetAntiAliasing); `TIR 2`: two total internal reflections followed "
        "(SetTIRBounces). `TIR` / `rest`: PSNR "
        "against `full SS` on the pixels where the two-interface reference's ray is totally "
-       "reflected at the exit, and on the others (`-`: none). Stage times are the pass's GL "
+       "reflected at the exit, and on the others (`-`: none); `rim`: on the silhouette's pixels "
+       "(those `full SS` covers only in part); `brightness`: the mean colour over `full SS`'s "
+       "on the glass pixels (1: as bright as the truth). Stage times are the pass's GL "
        "timer queries, over frames of their own after the timed frames (the timed frames run "
        "without them: their queries make llvmpipe finish each stage before the next), stage k = vtkRefractionPass's TIMED_* enumerator k (";
   for (int stage = 0; stage < vtkRefractionPass::TIMED_STAGE_COUNT; ++stage)
@@ -67,6 +72,27 @@ bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
   f << "); on llvmpipe they include work queued before "
         "the stage; -1 marks a stage the method does not run. `B/px` is "
         "vtkRefractionPass::GetTextureBytes() over the pixels.\n\n";
+  // How converged the truth is (--convergence): one figure per mesh and size.
+  std::map<std::pair<std::string, int>, double> convergence;
+  for (const Row& r : rows)
+  {
+    if (r.PsnrSSConvergence > 0.0)
+      convergence[{ r.Mesh, r.Size }] = r.PsnrSSConvergence;
+  }
+  if (!convergence.empty())
+  {
+    f << "## The truth's convergence\n\n`full SS` against the full reference traced at twice its "
+         "rays per pixel side, on the glass the reference sees (PSNR; 40 dB or more: the "
+         "figures above measure the method, not the truth's own noise).\n\n"
+         "| mesh | size | PSNR |\n|---|---|---|\n";
+    for (const auto& entry : convergence)
+    {
+      std::snprintf(line, sizeof(line), "| %s | %d | %.1f dB |\n", entry.first.first.c_str(),
+        entry.first.second, entry.second);
+      f << line;
+    }
+    f << "\n";
+  }
   // Table 1 of the paper: fps per model at 512x512 (or the size nearest it).
   std::map<std::string, std::map<std::string, const Row*>> table;
   int tableSize = 0;
@@ -107,8 +133,8 @@ bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
   }
   f << "\n## All rows\n\n| mesh | size | method | ms [min-max] | ratio [min-max] | stage ms | "
        "pre ms | B/px | PSNR two | PSNR full | PSNR full SS | model vs full SS | SSIM full SS | TIR / "
-       "rest (full SS) | TIR / rest (two) | T2 deg mean/p95 | TIR px |\n"
-    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+       "rest (full SS) | rim (full SS) | brightness | TIR / rest (two) | T2 deg mean/p95 | TIR px |\n"
+    << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& r : rows)
   {
     std::string stages;
@@ -120,13 +146,14 @@ bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
     }
     std::snprintf(line, sizeof(line),
       "| %s | %d | %s | %.2f [%.2f-%.2f] | %.2f [%.2f-%.2f] | %s | %.1f | %.0f | %s | %s | %s | "
-      "%s | %.3f | %s / %s | %s / %s | %.2f/%.2f | %ld |\n",
+      "%s | %.3f | %s / %s | %s | %.3f | %s / %s | %.2f/%.2f | %ld |\n",
       r.Mesh.c_str(), r.Size, r.Config.Label().c_str(), r.CpuMs.Median, r.CpuMs.Min,
       r.CpuMs.Max, r.Ratio.Median, r.Ratio.Min, r.Ratio.Max, stages.c_str(), r.PrecomputeMs,
       r.BytesPerPixel, Db(r.Two.Psnr).c_str(), Db(r.Full.Psnr).c_str(),
       Db(r.FullSS.Psnr).c_str(), Db(r.PsnrModelFullSS).c_str(), r.FullSS.Ssim,
-      Db(r.FullSS.PsnrTir).c_str(), Db(r.FullSS.PsnrRest).c_str(), Db(r.Two.PsnrTir).c_str(),
-      Db(r.Two.PsnrRest).c_str(), r.AngMean, r.AngP95, r.TirPixels);
+      Db(r.FullSS.PsnrTir).c_str(), Db(r.FullSS.PsnrRest).c_str(), Db(r.FullSS.PsnrRim).c_str(),
+      r.BrightnessFullSS, Db(r.Two.PsnrTir).c_str(), Db(r.Two.PsnrRest).c_str(), r.AngMean,
+      r.AngP95, r.TirPixels);
     f << line;
   }
   // The noise that remains: the same plain render timed in every job of a mesh and size.

@@ -12,10 +12,11 @@
 
 namespace rfbench
 {
-// Error of one picture against one reference, on glass pixels, split by TIR.
+// Error of one picture against one reference, on glass pixels, split by TIR; and on the
+// silhouette's pixels (Rim: those the supersampled full reference covers only in part).
 struct Errors
 {
-  double Psnr = -1, Rmse = -1, Ssim = -1, PsnrTir = -1, PsnrRest = -1;
+  double Psnr = -1, Rmse = -1, Ssim = -1, PsnrTir = -1, PsnrRest = -1, PsnrRim = -1;
 };
 
 // Medians and extremes over the repeats of one row.
@@ -39,6 +40,12 @@ struct Row
   // The two-interface model's own error: its supersampled reference against the supersampled
   // full one, on the row's glass pixels (the floor a method of that model can reach).
   double PsnrModelFullSS = -1;
+  // Mean colour of the picture over the supersampled full reference's, on the glass pixels:
+  // light lost or gained (1 is as bright as the truth).
+  double BrightnessFullSS = -1;
+  // The supersampled full reference against the same traced at twice the samples per side, on
+  // the glass the reference sees (--convergence; -1 without): how converged the truth is.
+  double PsnrSSConvergence = -1;
   double AngMean = 0, AngP95 = 0, AngMax = 0, P2Mean = 0, P2Max = 0, TirShare = 0,
          RefTirShare = 0;
   long Pixels = 0, TirPixels = 0;

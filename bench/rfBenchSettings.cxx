@@ -24,6 +24,9 @@ std::vector<Setting> PresetSettings(const Options& o)
   if (o.Quick)
   {
     settings.push_back({ "DIR", 5 });
+    Setting point{ "DIR", 5 };
+    point.PointLookups = true; // what the filtered lookups gain
+    settings.push_back(point);
     settings.push_back(antiAliased);
     if (o.MultiSamples > 0)
     {
@@ -125,5 +128,6 @@ void Apply(vtkRefractionPass* pass, const Setting& setting)
   pass->SetMultiSampleSilhouette(!setting.PixelComposite);
   pass->SetTIRBounces(setting.Bounces);
   pass->SetPeelLayers(std::max(setting.Layers, 2));
+  pass->SetFilteredLookups(!setting.PointLookups);
 }
 }

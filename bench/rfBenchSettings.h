@@ -26,6 +26,7 @@ struct Setting
   bool PixelComposite = false; // SetMultiSampleSilhouette(false): composited pixel by pixel
   int Bounces = 0;           // SetTIRBounces: total internal reflections followed
   int Layers = 0;            // PEEL: SetPeelLayers (K)
+  bool PointLookups = false; // SetFilteredLookups(false): one direction per ray
   std::string Label() const
   {
     std::ostringstream s;
@@ -40,7 +41,7 @@ struct Setting
         << (Nearest ? " nearest" : "") << (Paper ? " paper" : "");
     }
     s << (NoScene ? " NG off" : "") << (AntiAliasing ? " AA" : "")
-      << (PixelComposite ? " px" : "");
+      << (PixelComposite ? " px" : "") << (PointLookups ? " point" : "");
     if (Bounces > 0)
     {
       s << " TIR " << Bounces;

@@ -97,6 +97,7 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
      << (this->DepthRangeMode == DEPTH_RANGE_REDUCTION ? "reduction" : "bounds") << "\n";
   os << indent << "TIRPolicy: " << (this->TIRPolicy == TIR_CLAMP ? "clamp" : "reflect") << "\n";
   os << indent << "Fresnel: " << this->Fresnel << "\n";
+  os << indent << "FilteredLookups: " << this->FilteredLookups << "\n";
   os << indent << "AntiAliasing: " << this->AntiAliasing << "\n";
   os << indent << "MultiSampleSilhouette: " << this->MultiSampleSilhouette << "\n";
   os << indent << "TIRBounces: " << this->TIRBounces << "\n";

@@ -357,6 +357,15 @@ public:
   ///@}
 
   ///@{
+  /// Average each environment lookup over the directions the pixel's rays spread across
+  /// (on by default): glass that shrinks the environment shows its mean rather than moire,
+  /// as a camera's pixel does. Off: one direction per ray (what closed forms sample).
+  vtkSetMacro(FilteredLookups, bool);
+  vtkGetMacro(FilteredLookups, bool);
+  vtkBooleanMacro(FilteredLookups, bool);
+  ///@}
+
+  ///@{
   /**
    * Anti-aliasing of the glass (off by default, as VTK's own FXAA and multisampling are):
    * the refraction is shaded at the pixels' corners instead of their centres (one ray per
@@ -510,6 +519,7 @@ protected:
   int PeelLayers = 4;
   double SHSmoothing = 5.0;
   bool Fresnel = true;
+  bool FilteredLookups = true;
   bool AntiAliasing = false;
   bool MultiSampleSilhouette = true;
   bool DebugOutput = false;

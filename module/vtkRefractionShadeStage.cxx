@@ -115,6 +115,10 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
   {
     defines << "#define RF_FRESNEL\n";
   }
+  if (settings->GetFilteredLookups())
+  {
+    defines << "#define RF_FILTERED_LOOKUPS\n";
+  }
   if (frame.EnvironmentCube)
   {
     defines << "#define RF_ENV_CUBEMAP\n";

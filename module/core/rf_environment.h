@@ -12,6 +12,11 @@ extern "C" {
  * gives the horizon colour. Colours are linear RGB, at most about 3 (the sun). */
 void rf_builtin_environment(const double direction_world[3], double rgb[3]);
 
+/* The same averaged over a cone of directions `width` radians across (the spread of a
+ * pixel's rays; 0, negative or NaN: the one direction, exactly rf_builtin_environment). */
+void rf_builtin_environment_filtered(
+  const double direction_world[3], double width, double rgb[3]);
+
 #ifdef __cplusplus
 }
 #endif

@@ -2,7 +2,8 @@
 // reference on the sphere above a measured threshold; every row timed at least 3 times with
 // its median inside its min/max; the supersampled reference in its own columns, and DIR's
 // error against it larger than against the one-sample reference (both share the aliasing
-// that the supersampled truth does not have).
+// that the supersampled truth does not have); on the silhouette's pixels (rim) DIR's error
+// larger than over the whole glass, and the glass as bright as the truth within 3%.
 //   CheckBenchmarkCsv results.csv MIN_DIR_SPHERE_PSNR
 #include <cmath>
 #include <cstdio>
@@ -60,8 +61,10 @@ int main(int argc, char* argv[])
   };
   const int repeats = column("repeats"), ratio = column("cpu_ratio"),
             ratioMin = column("cpu_ratio_min"), ratioMax = column("cpu_ratio_max"),
-            psnrFullSS = column("psnr_full_ss"), psnrFull = column("psnr_full");
-  if (repeats < 0 || ratio < 0 || ratioMin < 0 || ratioMax < 0 || psnrFullSS < 0 || psnrFull < 0)
+            psnrFullSS = column("psnr_full_ss"), psnrFull = column("psnr_full"),
+            psnrRim = column("psnr_full_ss_rim"), brightness = column("brightness_full_ss");
+  if (repeats < 0 || ratio < 0 || ratioMin < 0 || ratioMax < 0 || psnrFullSS < 0 || psnrFull < 0 ||
+    psnrRim < 0 || brightness < 0)
   {
     std::fprintf(stderr, "missing repeat, spread or supersampled-reference columns\n");
     return 1;
@@ -126,6 +129,20 @@ int main(int argc, char* argv[])
       {
         std::fprintf(stderr, "DIR reads no worse against the supersampled truth than against "
                              "the one-sample reference: the supersampling had no effect\n");
+        ++failures;
+      }
+      const double rim = std::atof(f[psnrRim].c_str());
+      const double bright = std::atof(f[brightness].c_str());
+      std::printf("  on the rim %.2f dB; brightness %.4f of the truth's\n", rim, bright);
+      if (!(rim > 0.0 && rim < fullSS))
+      {
+        std::fprintf(stderr, "the rim's error is not above the whole glass's: no rim pixels, or "
+                             "the rim mask is wrong\n");
+        ++failures;
+      }
+      if (!(std::fabs(bright - 1.0) <= 0.03))
+      {
+        std::fprintf(stderr, "DIR's glass is not as bright as the truth's within 3%%\n");
         ++failures;
       }
     }

@@ -41,6 +41,10 @@ struct ReferenceScene
   {
     this->Renderer->SetPass(this->Pass);
     this->Pass->SetEnvironmentModeToBuiltin();
+    // The pictures are held against the reference's one ray per pixel (Trace's default), so
+    // the pass too looks the environment up along one direction per pixel; a test against a
+    // supersampled reference turns the filtered lookups (the pass's default) back on.
+    this->Pass->FilteredLookupsOff();
     this->Renderer->SetBackground(0.0, 0.0, 0.0);
     this->Window = MakeWindow(this->Renderer, size, size);
   }

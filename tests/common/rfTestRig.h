@@ -212,6 +212,9 @@ struct Rig
   Rig(int width, int height)
   {
     this->Glass->SetEnvironmentModeToBuiltin(); // the closed forms are of the built-in sky
+    // The closed forms read the environment along each pixel's one ray; the pass's default
+    // averages it over the pixel's spread of rays (FilteredLookups), which they do not model.
+    this->Glass->FilteredLookupsOff();
     this->Glass->DebugOutputOn();
     this->Probe->Inner = this->Glass;
     this->Framebuffer->SetColorFormat(vtkTextureObject::Float32);

@@ -137,7 +137,6 @@ bool WritePNG(vtkImageData* image, const std::string& path)
 vtkSmartPointer<vtkImageData> GrabMask(Scene& scene, vtkRenderWindow* window)
 {
   vtkRenderer* renderer = scene.Renderer;
-  const double ior = vtkRefractionPass::GetIndexOfRefraction(scene.Glass);
   double background[3];
   renderer->GetBackground(background);
   const bool gradient = renderer->GetGradientBackground();
@@ -152,7 +151,7 @@ vtkSmartPointer<vtkImageData> GrabMask(Scene& scene, vtkRenderWindow* window)
       hidden.push_back(prop);
     }
   }
-  vtkRefractionPass::ClearGlass(scene.Glass);
+  PlainActorScope plain(scene.Glass);
   vtkProperty* property = scene.Glass->GetProperty();
   property->LightingOff();
   property->SetColor(1.0, 1.0, 1.0);
@@ -168,7 +167,6 @@ vtkSmartPointer<vtkImageData> GrabMask(Scene& scene, vtkRenderWindow* window)
   property->LightingOn();
   renderer->SetBackground(background);
   renderer->SetGradientBackground(gradient);
-  vtkRefractionPass::MakeGlass(scene.Glass, ior);
   for (vtkProp* prop : hidden)
   {
     prop->SetVisibility(true);

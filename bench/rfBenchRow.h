@@ -4,6 +4,7 @@
 #define rfBenchRow_h
 
 #include "rfBenchSettings.h"
+#include "rfSpread.h"
 
 #include <vtkType.h>
 
@@ -20,10 +21,7 @@ struct Errors
 };
 
 // Medians and extremes over the repeats of one row.
-struct Spread
-{
-  double Median = -1, Min = -1, Max = -1;
-};
+using Spread = rftiming::Spread;
 
 struct Row
 {

@@ -12,28 +12,6 @@
 
 namespace rfbench
 {
-double Median(std::vector<double> v)
-{
-  if (v.empty())
-  {
-    return -1.0;
-  }
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
-}
-
-Spread SpreadOf(const std::vector<double>& v)
-{
-  Spread s;
-  if (!v.empty())
-  {
-    s.Median = Median(v);
-    s.Min = *std::min_element(v.begin(), v.end());
-    s.Max = *std::max_element(v.begin(), v.end());
-  }
-  return s;
-}
-
 // Medians over `frames` frames after 5 warm-up frames: CPU wall time per frame (to
 // glFinish) and a GL timer query around the frame, with the pass's own stage timers off (their
 // queries flush llvmpipe between stages, which a user's frame does not pay); then the pass's

@@ -12,11 +12,10 @@ class vtkRenderWindow;
 
 namespace rfbench
 {
-// The median of v, -1 when empty.
-double Median(std::vector<double> v);
-
-// Median, min and max of v (-1 each when empty).
-Spread SpreadOf(const std::vector<double>& v);
+// The median of v (-1 when empty), and median, min and max of v (rfSpread.h, which the
+// viewer's --timing shares).
+using rftiming::Median;
+using rftiming::SpreadOf;
 
 struct Timing
 {

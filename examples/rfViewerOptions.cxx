@@ -240,7 +240,9 @@ int rfViewerParseOptions(int argc, char* argv[], const std::vector<std::string>&
     { "--zoom", "X", &o.Zoom, nullptr,
       "Camera zoom after fitting the scene, 0.1 to 10 (default 1.1)." },
     { "--timing", "N", &o.Timing, nullptr,
-      "Also time this many frames of DIR, SIR, ISR, SSP, PEEL and of a plain VTK render of the same mesh, and print the medians (0: no timing)." },
+      "Also time this many frames (after 5 warm-up frames) of DIR, SIR, ISR, SSP, PEEL and of a plain VTK render of the same mesh, in --timing-repeats rounds, and print per method the median over the rounds with its [min-max] and its ratio to the plain render of the same round (0: no timing)." },
+    { "--timing-repeats", "R", &o.TimingRepeats, nullptr,
+      "Rounds of --timing, 1 to 100 (default 3): each round times every method and the plain render once, in an order shuffled per round (fixed seed), so that a slow phase of the machine spreads over all of them." },
     { "--no-text", nullptr, nullptr, &o.NoText,
       "No status line in the images." },
     { "--interactive", nullptr, nullptr, &o.Interactive,
@@ -396,6 +398,11 @@ int rfViewerParseOptions(int argc, char* argv[], const std::vector<std::string>&
   if (!ParseInt(o.Timing, 0, 100000, s.Timing))
   {
     return rfViewerUsage("--timing needs a whole number of frames from 0, not " + rfViewerQuote(o.Timing));
+  }
+  if (!ParseInt(o.TimingRepeats, 1, 100, s.TimingRepeats))
+  {
+    return rfViewerUsage("--timing-repeats needs a whole number of rounds from 1 to 100, not " +
+      rfViewerQuote(o.TimingRepeats));
   }
   if (!o.Demo.empty() && o.Demo != "metaballs" && o.Demo != "waves")
   {

@@ -36,6 +36,7 @@ struct rfViewerOptions
   std::string Elevation = "20";
   std::string Zoom = "1.1";
   std::string Timing = "0";
+  std::string TimingRepeats = "3";
   bool Interactive = false;
   bool NoText = false;
   bool AntiAliasing = false;
@@ -67,6 +68,7 @@ struct rfViewerSettings
   double Elevation = 20.0;
   double Zoom = 1.1;
   int Timing = 0;
+  int TimingRepeats = 3; // rounds of --timing, each timing every method and the plain render
 };
 
 // Parses argv after @a preset; returns RF_VIEWER_OK, the exit code of a usage error (its

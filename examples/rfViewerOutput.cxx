@@ -1,5 +1,6 @@
 #include "rfViewerOutput.h"
 
+#include "rfSpread.h"
 #include "rfViewer.h"
 
 #include <vtkCamera.h>
@@ -19,6 +20,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <map>
+#include <random>
+#include <string>
 #include <unistd.h>
 
 namespace rfviewer
@@ -62,6 +66,38 @@ private:
   int LastTenth = -1;
 };
 
+// The glass drawn as the ordinary VTK actor it is, for as long as this lives; its glass keys
+// (index of refraction, dispersion: ClearGlass removes both) are put back after, so that what
+// renders next renders the same glass.
+class PlainActorScope
+{
+public:
+  explicit PlainActorScope(vtkProp* glass)
+    : Glass(glass)
+    , IndexOfRefraction(vtkRefractionPass::GetIndexOfRefraction(glass))
+    , HasDispersion(vtkRefractionPass::GetDispersion(glass, this->Dispersion))
+  {
+    vtkRefractionPass::ClearGlass(glass);
+  }
+  ~PlainActorScope()
+  {
+    vtkRefractionPass::MakeGlass(this->Glass, this->IndexOfRefraction);
+    if (this->HasDispersion)
+    {
+      vtkRefractionPass::SetDispersion(
+        this->Glass, this->Dispersion[0], this->Dispersion[1], this->Dispersion[2]);
+    }
+  }
+  PlainActorScope(const PlainActorScope&) = delete;
+  PlainActorScope& operator=(const PlainActorScope&) = delete;
+
+private:
+  vtkProp* Glass;
+  double IndexOfRefraction;
+  double Dispersion[3] = { 0, 0, 0 };
+  bool HasDispersion;
+};
+
 double RenderMilliseconds(vtkRenderWindow* window)
 {
   vtkNew<vtkTimerLog> timer;
@@ -101,7 +137,6 @@ bool WritePNG(vtkImageData* image, const std::string& path)
 vtkSmartPointer<vtkImageData> GrabMask(Scene& scene, vtkRenderWindow* window)
 {
   vtkRenderer* renderer = scene.Renderer;
-  const double ior = vtkRefractionPass::GetIndexOfRefraction(scene.Glass);
   double background[3];
   renderer->GetBackground(background);
   const bool gradient = renderer->GetGradientBackground();
@@ -116,7 +151,7 @@ vtkSmartPointer<vtkImageData> GrabMask(Scene& scene, vtkRenderWindow* window)
       hidden.push_back(prop);
     }
   }
-  vtkRefractionPass::ClearGlass(scene.Glass);
+  PlainActorScope plain(scene.Glass);
   vtkProperty* property = scene.Glass->GetProperty();
   property->LightingOff();
   property->SetColor(1.0, 1.0, 1.0);
@@ -132,7 +167,6 @@ vtkSmartPointer<vtkImageData> GrabMask(Scene& scene, vtkRenderWindow* window)
   property->LightingOn();
   renderer->SetBackground(background);
   renderer->SetGradientBackground(gradient);
-  vtkRefractionPass::MakeGlass(scene.Glass, ior);
   for (vtkProp* prop : hidden)
   {
     prop->SetVisibility(true);
@@ -180,6 +214,16 @@ vtkSmartPointer<vtkImageData> ContactSheet(
   return image;
 }
 
+// What --timing times, in the order it prints them: the pass's methods, then the plain VTK
+// render of the same mesh (PlainRender: the glass drawn as the ordinary actor it is).
+const int TimedMethods[] = { vtkRefractionPass::DIR, vtkRefractionPass::SIR,
+  vtkRefractionPass::ISR, vtkRefractionPass::SSP, vtkRefractionPass::PEEL };
+const int PlainRender = -1;
+// Fixed, so that two runs time in the same order (the benchmark's --seed defaults to 1 too).
+const unsigned TimingSeed = 1;
+
+// The median frame time of `frames` frames after 5 warm-up frames, which absorb what a switch
+// of method costs once (its shaders, its buffers); the camera turns a degree a frame.
 double MedianFrameMilliseconds(Scene& scene, vtkRenderWindow* window, int frames)
 {
   std::vector<double> times;
@@ -192,8 +236,106 @@ double MedianFrameMilliseconds(Scene& scene, vtkRenderWindow* window, int frames
       times.push_back(ms);
     }
   }
-  std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
-  return times[times.size() / 2];
+  return rftiming::Median(times);
+}
+
+// One block of a round: the median frame time of a method of the pass, or of the plain render.
+double TimeBlock(Scene& scene, vtkRenderWindow* window, int method, int frames)
+{
+  if (method == PlainRender)
+  {
+    PlainActorScope plain(scene.Glass);
+    return MedianFrameMilliseconds(scene, window, frames);
+  }
+  scene.Pass->SetMethod(method);
+  return MedianFrameMilliseconds(scene, window, frames);
+}
+
+// Per method (PlainRender included) one block time per round, and per method of the pass its
+// ratio to the plain render of the same round.
+struct TimingRounds
+{
+  std::map<int, std::vector<double>> Milliseconds;
+  std::map<int, std::vector<double>> RatioToPlain;
+};
+
+// Every round times every method and the plain render once, in an order shuffled per round:
+// a slow phase of a shared machine then spreads over all of them instead of falling on
+// whichever ran first, and each ratio is taken against the plain render of its own round
+// (bench/RefractionBenchmark.cxx times its rows the same way).
+TimingRounds TimeRounds(Scene& scene, vtkRenderWindow* window, const rfViewerSettings& s)
+{
+  std::vector<int> order(std::begin(TimedMethods), std::end(TimedMethods));
+  order.push_back(PlainRender);
+  std::mt19937 random(TimingSeed);
+  ProgressLine progress("timing rounds", s.TimingRepeats);
+  TimingRounds rounds;
+  for (int round = 0; round < s.TimingRepeats; ++round)
+  {
+    std::shuffle(order.begin(), order.end(), random);
+    std::map<int, double> ms;
+    for (int method : order)
+    {
+      ms[method] = TimeBlock(scene, window, method, s.Timing);
+    }
+    for (const auto& block : ms)
+    {
+      rounds.Milliseconds[block.first].push_back(block.second);
+      if (block.first != PlainRender)
+      {
+        rounds.RatioToPlain[block.first].push_back(block.second / ms[PlainRender]);
+      }
+    }
+    progress.Update(round + 1);
+  }
+  scene.Pass->SetMethod(s.Method);
+  return rounds;
+}
+
+// The method's name with the setting its time depends on, as the timing lines show it.
+std::string MethodLabel(int method, const rfViewerSettings& s)
+{
+  switch (method)
+  {
+    case vtkRefractionPass::DIR:
+      return "DIR (" + std::to_string(s.Steps) + " steps)";
+    case vtkRefractionPass::SIR:
+      return "SIR";
+    case vtkRefractionPass::ISR:
+      return "ISR";
+    case vtkRefractionPass::SSP:
+      return "SSP";
+    case vtkRefractionPass::PEEL:
+      return "PEEL (" + std::to_string(s.Layers) + " layers)";
+    default:
+      return "plain VTK";
+  }
+}
+
+// "[22.00-33.00]": the extremes over the rounds.
+std::string Extremes(const rftiming::Spread& spread)
+{
+  char text[64];
+  std::snprintf(text, sizeof(text), "[%.2f-%.2f]", spread.Min, spread.Max);
+  return text;
+}
+
+// "  DIR (5 steps)     24.10 ms [22.00-33.00]   1.80x plain [1.62-2.41]" and what follows;
+// the plain render's line has no ratio.
+void PrintTimingLine(const std::string& label, const rftiming::Spread& ms,
+  const rftiming::Spread* ratio, const std::string& extra)
+{
+  std::printf("  %-16s %8.2f ms ", label.c_str(), ms.Median);
+  if (ratio)
+  {
+    std::printf("%-15s %5.2fx plain %s", Extremes(ms).c_str(), ratio->Median,
+      Extremes(*ratio).c_str());
+  }
+  else
+  {
+    std::printf("%s", Extremes(ms).c_str());
+  }
+  std::printf("%s\n", extra.c_str());
 }
 
 void ReportTiming(Scene& scene, vtkRenderWindow* window, const rfViewerSettings& s)
@@ -202,35 +344,32 @@ void ReportTiming(Scene& scene, vtkRenderWindow* window, const rfViewerSettings&
   scene.Text->SetVisibility(false);
   const vtkIdType triangles =
     vtkPolyData::SafeDownCast(scene.Surface->GetOutputDataObject(0))->GetNumberOfPolys();
-  double ms[5];
-  for (int method : { vtkRefractionPass::DIR, vtkRefractionPass::SIR, vtkRefractionPass::ISR,
-         vtkRefractionPass::SSP, vtkRefractionPass::PEEL })
-  {
-    scene.Pass->SetMethod(method);
-    ms[method] = MedianFrameMilliseconds(scene, window, s.Timing);
-  }
-  scene.Pass->SetMethod(s.Method);
-  const double ior = vtkRefractionPass::GetIndexOfRefraction(scene.Glass);
-  vtkRefractionPass::ClearGlass(scene.Glass);
-  const double plain = MedianFrameMilliseconds(scene, window, s.Timing);
-  vtkRefractionPass::MakeGlass(scene.Glass, ior);
+  const TimingRounds rounds = TimeRounds(scene, window, s);
   scene.Text->SetVisibility(text);
-  std::printf("median frame time over %d frames at %dx%d, %lld triangles, renderer: %s\n",
-    s.Timing, s.Width, s.Height, static_cast<long long>(triangles),
+  std::printf("frame times of %d frames x %d rounds, interleaved, at %dx%d, %lld triangles, "
+              "renderer: %s\n",
+    s.Timing, s.TimingRepeats, s.Width, s.Height, static_cast<long long>(triangles),
     reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
-  std::printf("  DIR (%d steps)  %8.2f ms  (%.2fx plain)\n", s.Steps, ms[vtkRefractionPass::DIR],
-    ms[vtkRefractionPass::DIR] / plain);
-  std::printf("  SIR             %8.2f ms  (%.2fx plain)\n", ms[vtkRefractionPass::SIR],
-    ms[vtkRefractionPass::SIR] / plain);
-  std::printf("  ISR             %8.2f ms  (%.2fx plain), plus %.2f ms of d_N ray casting each "
-              "time the surface changes\n",
-    ms[vtkRefractionPass::ISR], ms[vtkRefractionPass::ISR] / plain,
-    scene.Distances->GetLastComputeSeconds() * 1e3);
-  std::printf("  SSP             %8.2f ms  (%.2fx plain)\n", ms[vtkRefractionPass::SSP],
-    ms[vtkRefractionPass::SSP] / plain);
-  std::printf("  PEEL (%d layers) %7.2f ms  (%.2fx plain)\n", s.Layers,
-    ms[vtkRefractionPass::PEEL], ms[vtkRefractionPass::PEEL] / plain);
-  std::printf("  plain VTK       %8.2f ms\n", plain);
+  std::printf("  each round times every method and plain VTK once, in a shuffled order (seed %u);\n"
+              "  a round's time is the median of its frames after 5 warm-up frames; ms and the\n"
+              "  ratio (to the plain render of the same round) are medians over the rounds with\n"
+              "  [min-max] beside them\n",
+    TimingSeed);
+  for (int method : TimedMethods)
+  {
+    char extra[128] = "";
+    if (method == vtkRefractionPass::ISR)
+    {
+      std::snprintf(extra, sizeof(extra),
+        ", plus %.2f ms of d_N ray casting each time the surface changes",
+        scene.Distances->GetLastComputeSeconds() * 1e3);
+    }
+    const rftiming::Spread ratio = rftiming::SpreadOf(rounds.RatioToPlain.at(method));
+    PrintTimingLine(MethodLabel(method, s), rftiming::SpreadOf(rounds.Milliseconds.at(method)),
+      &ratio, extra);
+  }
+  PrintTimingLine(MethodLabel(PlainRender, s),
+    rftiming::SpreadOf(rounds.Milliseconds.at(PlainRender)), nullptr, "");
 }
 }
 

@@ -374,6 +374,10 @@ public:
    * pixel for the price of one, plus a pass that finds the corners next to the glass (those
    * are shaded) and a composite that averages each pixel's four. At the silhouette the share
    * of a pixel's corners on the glass blends it over the scene. Costs one DEPTH32F target.
+   * With FilteredLookups (the default) it is worth it only for the silhouette of a
+   * single-sampled window: inside the glass the filtered lookups come closer to the
+   * supersampled truth than the four corners averaged a pixel apart (tests: 33.9 dB against
+   * 27.5 inside, 19.4 against 14.9 on the silhouette, single-sampled).
    */
   vtkSetMacro(AntiAliasing, bool);
   vtkGetMacro(AntiAliasing, bool);
@@ -391,7 +395,7 @@ public:
    * cover an opaque actor of the same mesh, so its silhouette, and its edges against opaque
    * actors, are as smooth as VTK's own. Costs one more draw of the glass's front faces (in a
    * single-sampled framebuffer nothing: the pass composites pixel by pixel there). Works with
-   * AntiAliasing too, which smooths the inside of the glass.
+   * AntiAliasing too.
    */
   vtkSetMacro(MultiSampleSilhouette, bool);
   vtkGetMacro(MultiSampleSilhouette, bool);

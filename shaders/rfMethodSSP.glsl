@@ -12,15 +12,10 @@ uniform int rfSSPMask;
 // alpha (listing 19-2) keeps the unperturbed position where the perturbed one is not glass
 // (an object in front, or outside the glass). Where the glass lies over the background, the
 // environment along the refracted ray stands in for the background's flat colour.
-// Glass is alpha 0.25 (over the background) or 0.75 (over an object), objects 1, the
-// background 0 (vtkRefractionGeometryStage::DrawMask). In a multisampled window a pixel on an
-// edge resolves to a mix of its samples' alphas: the edge of an object in front of the glass
-// reads 0.75-1 and its colour holds the object's, so only alphas at the glass's own values
-// count as glass.
 vec3 rfSSPScene(vec2 own, vec2 perturbed, vec3 T1)
 {
   vec4 a = textureLod(rfSceneColor, clamp(perturbed, 0.0, 1.0), 0.0);
-  bool glassThere = rfSSPMask == 0 || abs(a.a - 0.25) < 0.05 || abs(a.a - 0.75) < 0.05;
+  bool glassThere = rfSSPMask == 0 || (a.a > 0.1 && a.a < 0.9);
   vec4 s = glassThere ? a : textureLod(rfSceneColor, own, 0.0);
   return s.a < 0.5 ? rfEnvironment(T1) : s.rgb;
 }

@@ -143,6 +143,12 @@ void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
 void vtkRefractionGeometryStage::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->Superclass::ReleaseGraphicsResources(w);
+  // As VTK's own GL objects (vtkOpenGLRenderTimer): the window made its context current.
+  if (this->PeelQuery != 0 && w)
+  {
+    glDeleteQueries(1, &this->PeelQuery);
+  }
+  this->PeelQuery = 0;
   this->SHTransfer->ReleaseGraphicsResources(w);
   this->PieceSheets->ReleaseGraphicsResources(w);
 }
@@ -263,20 +269,31 @@ void vtkRefractionGeometryStage::DrawBack(vtkOpenGLRenderer* ren, vtkRefractionT
 }
 
 //------------------------------------------------------------------------------
-void vtkRefractionGeometryStage::DrawPeel(
+bool vtkRefractionGeometryStage::DrawPeel(
   vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layer)
 {
   if (!this->Peel || layer < 1 || layer > 7)
   {
-    return;
+    return false;
+  }
+  if (this->PeelQuery == 0)
+  {
+    glGenQueries(1, &this->PeelQuery);
   }
   this->PeelPrevious = targets->Get(
     layer == 1 ? vtkRefractionTargets::FRONT_SURFACE : vtkRefractionTargets::PEEL_1 + layer - 2);
   this->PeelPrevious->Activate();
+  glBeginQuery(GL_ANY_SAMPLES_PASSED, this->PeelQuery);
   this->DrawIntoTargets(ren, targets, { vtkRefractionTargets::PEEL_1 + layer - 1 },
     vtkRefractionTargets::PEEL_Z, 1.0, GL_LESS, STAGE_PEEL);
+  glEndQuery(GL_ANY_SAMPLES_PASSED);
   this->PeelPrevious->Deactivate();
   this->PeelPrevious = nullptr;
+  // Read now: the next layer would be drawn for nothing. On llvmpipe the wait is the layer's
+  // own rasterization, which the next draw waited for anyway (it reads this layer).
+  GLuint anyKept = 1;
+  glGetQueryObjectuiv(this->PeelQuery, GL_QUERY_RESULT, &anyKept);
+  return anyKept != 0;
 }
 
 //------------------------------------------------------------------------------

@@ -65,8 +65,9 @@ public:
   /// The back capture (BACK_SURFACE, BACK_Z).
   void DrawBack(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets);
   /// PEEL's layer `layer` (1..7: PEEL_1..PEEL_7), peeled behind the layer before it (layer
-  /// 0 is FRONT_SURFACE, drawn first).
-  void DrawPeel(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layer);
+  /// 0 is FRONT_SURFACE, drawn first). Returns whether any fragment of the glass was kept (an
+  /// occlusion query, read at once): an empty layer leaves nothing for the ones behind it.
+  bool DrawPeel(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layer);
   /// SSP's refraction mask into the alpha of the framebuffer bound now.
   void DrawMask(vtkOpenGLRenderer* ren);
   /// The glass props into the framebuffer bound now (the renderer's viewport) for `stage`,
@@ -149,6 +150,7 @@ private:
   bool Peel = false;
   bool SignedFront = false;
   vtkTextureObject* PeelPrevious = nullptr; ///< the layer the one being drawn peels behind
+  unsigned int PeelQuery = 0;               ///< DrawPeel's occlusion query (0: none yet)
   bool Parallel = false;
   vtkNew<vtkMatrix4x4> InverseProjection;
   int Stage = STAGE_NONE;

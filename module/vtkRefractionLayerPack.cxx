@@ -33,7 +33,7 @@ void vtkRefractionLayerPack::PrintSelf(ostream& os, vtkIndent indent)
 
 //------------------------------------------------------------------------------
 bool vtkRefractionLayerPack::Pack(
-  vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int layers)
+  vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int layers, int found)
 {
   if (layers < 2 || layers > 8)
   {
@@ -63,6 +63,7 @@ bool vtkRefractionLayerPack::Pack(
     this->Quad.reset();
     return false;
   }
+  program->SetUniformi("rfLayersFound", found);
   std::vector<vtkTextureObject*> sources;
   for (int layer = 0; layer < layers; ++layer)
   {

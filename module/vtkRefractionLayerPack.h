@@ -26,8 +26,10 @@ public:
   vtkTypeMacro(vtkRefractionLayerPack, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// Packs the depths of `layers` layers (2..8); false when the shader cannot be built.
-  bool Pack(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int layers);
+  /// Packs the depths of `layers` layers (2..8), of which the first `found` were drawn this
+  /// frame (the others are written empty, whatever their targets hold); false when the
+  /// shader cannot be built.
+  bool Pack(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int layers, int found);
 
   void ReleaseGraphicsResources(vtkWindow* w);
 

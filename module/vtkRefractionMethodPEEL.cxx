@@ -30,8 +30,12 @@ std::string vtkRefractionMethodPEEL::GetShaderSource() const
 
 //------------------------------------------------------------------------------
 void vtkRefractionMethodPEEL::SetUniforms(
-  vtkShaderProgram* program, vtkRefractionPass*, const double boundsDepthRange[2]) const
+  vtkShaderProgram* program, vtkRefractionPass* settings, const double boundsDepthRange[2]) const
 {
+  if (program->IsUniformUsed("rfPeelLayersFound"))
+  {
+    program->SetUniformi("rfPeelLayersFound", settings->GetPeelLayersFound());
+  }
   if (program->IsUniformUsed("rfGlassDepthRange"))
   {
     const float range[2] = { static_cast<float>(boundsDepthRange[0]),

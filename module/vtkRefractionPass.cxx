@@ -102,6 +102,7 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MultiSampleSilhouette: " << this->MultiSampleSilhouette << "\n";
   os << indent << "TIRBounces: " << this->TIRBounces << "\n";
   os << indent << "PeelLayers: " << this->PeelLayers << "\n";
+  os << indent << "PeelLayersFound: " << this->PeelLayersFound << "\n";
   os << indent << "SHSmoothing: " << this->SHSmoothing << "\n";
   os << indent << "EnvironmentMode: "
      << (this->EnvironmentMode == ENVIRONMENT_RENDERER ? "renderer" : "builtin") << "\n";
@@ -460,15 +461,23 @@ void vtkRefractionPass::RenderGlass(
   if (peelLayers > 1)
   {
     this->StageTimers->Start(TIMED_BACK_CAPTURE);
+    this->PeelLayersFound = peelLayers;
     if (!exchange) // drawn and composited above
     {
       vtkRefractionDepthRange::ComputeBounds(ren, glass, this->BoundsDepthRange);
       for (int layer = 1; layer < peelLayers; ++layer)
       {
-        this->GeometryStage->DrawPeel(ren, this->Targets, layer);
+        if (!this->GeometryStage->DrawPeel(ren, this->Targets, layer))
+        {
+          // Nothing behind this layer's (empty) texels either: the layers from here on are
+          // left as they are, and the packing and the shading read them as empty.
+          this->PeelLayersFound = layer;
+          break;
+        }
       }
     }
-    const bool packed = this->LayerPack->Pack(renWin, this->Targets, peelLayers);
+    const bool packed =
+      this->LayerPack->Pack(renWin, this->Targets, peelLayers, this->PeelLayersFound);
     this->StageTimers->Stop(TIMED_BACK_CAPTURE);
     if (!packed)
     {

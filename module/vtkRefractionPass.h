@@ -282,11 +282,20 @@ public:
    * PEEL: the layers of the glass captured by depth peeling, K (4 by default, as the paper),
    * counting the front surface: 2 holds what DIR's nearest back surface holds, each further
    * layer costs one more draw of the glass and 16 bytes per pixel. Rays follow at most
-   * K - 1 + TIRBounces interfaces after the front one.
+   * K - 1 + TIRBounces interfaces after the front one. Peeling stops at the first layer that
+   * comes out empty (an occlusion query per layer): the layers behind it would be empty too,
+   * so a convex glass costs two draws whatever K.
    */
   vtkSetClampMacro(PeelLayers, int, 2, 8);
   vtkGetMacro(PeelLayers, int);
   ///@}
+
+  /**
+   * PEEL: how many of the PeelLayers layers the last frame found holding glass somewhere
+   * (the front surface counts; 0 before the first PEEL frame). Across MPI ranks every layer is
+   * drawn and this is PeelLayers.
+   */
+  vtkGetMacro(PeelLayersFound, int);
 
   /**
    * What the glass shows where its rays leave toward the surroundings. Always the renderer's
@@ -521,6 +530,7 @@ protected:
   int TIRPolicy = TIR_CLAMP;
   int TIRBounces = 0;
   int PeelLayers = 4;
+  int PeelLayersFound = 0;
   double SHSmoothing = 5.0;
   bool Fresnel = true;
   bool FilteredLookups = true;

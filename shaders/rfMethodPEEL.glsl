@@ -33,9 +33,16 @@ uniform sampler2D rfPeelDepthsB;
 // depths (positive, near to far) of those bounds: no layer lies outside them.
 uniform float rfGlassExtent;
 uniform vec2 rfGlassDepthRange;
+// Layers from rfPeelLayersFound on were not drawn this frame (peeling stopped at an empty
+// one, vtkRefractionPass::GetPeelLayersFound): read as empty, whatever their targets hold.
+uniform int rfPeelLayersFound;
 
 vec4 rfPeelLayerTexel(ivec2 texel, int layer)
 {
+  if (layer >= rfPeelLayersFound)
+  {
+    return vec4(0.0);
+  }
   // The front G-buffer's material (w) is positive: the nearest surface faces the viewer.
   if (layer == 0)
   {

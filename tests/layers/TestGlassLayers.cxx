@@ -345,6 +345,15 @@ int Deep()
   scene.Pass->SetPeelLayers(8);
   auto eight = scene.Render();
   const int ballDifference = rftest::MaxChannelDifference(four, eight);
+  const int ballFound = scene.Pass->GetPeelLayersFound();
+  // Peeling stops at the first empty layer: a ball inside the ball fills layers 2 and 3; taken
+  // out again, those targets still hold it, and the ball alone must read them as empty.
+  auto inner = AddBall(scene, 0.0, 0.0, 0.0, 0.5, 1.9);
+  scene.Render();
+  const int nestedFound = scene.Pass->GetPeelLayersFound();
+  scene.Renderer->RemoveActor(inner);
+  auto after = scene.Render();
+  const int staleDifference = rftest::MaxChannelDifference(eight, after);
   scene.Pass->SetTIRBounces(4);
   scene.Renderer->RemoveActor(ball);
   auto torus = rftest::MakeTorus();
@@ -376,12 +385,19 @@ int Deep()
     }
   }
   vtkOutputWindow::SetInstance(nullptr);
-  std::printf("deep: K = 8 against K = 4 on a ball: largest channel difference %d; torus of "
-              "index 2.4 with K = 8, B = 4: %d glass pixels, %d non-finite components, %d "
-              "errors, %d warnings\n",
-    ballDifference, glass, notFinite, log->Count("error"), log->Count("warning"));
+  std::printf("deep: K = 8 against K = 4 on a ball: largest channel difference %d; layers "
+              "found with K = 8: %d for the ball, %d with a ball inside it, the ball again after "
+              "it: largest channel difference %d; torus of index 2.4 with K = 8, B = 4: %d glass "
+              "pixels, %d non-finite components, %d errors, %d warnings\n",
+    ballDifference, ballFound, nestedFound, staleDifference, glass, notFinite,
+    log->Count("error"), log->Count("warning"));
   RF_REQUIRE(ballDifference <= 1, "the empty layers changed the ball (difference %d)",
     ballDifference);
+  RF_REQUIRE(ballFound == 2 && nestedFound == 4,
+    "layers found: %d for a ball (2 expected), %d for nested balls (4 expected)", ballFound,
+    nestedFound);
+  RF_REQUIRE(staleDifference == 0,
+    "the layers left from the nested balls changed the ball (difference %d)", staleDifference);
   RF_REQUIRE(glass > 2000, "too few glass pixels: %d", glass);
   RF_REQUIRE(notFinite == 0, "%d non-finite exit components", notFinite);
   RF_REQUIRE(log->Count("error") == 0 && log->Count("warning") == 0, "messages were reported");

@@ -2,6 +2,7 @@
 #   -DRUN=prog|arg|arg...     the program and its arguments, separated by |
 #   -DEXIT_CODE=N                 the exit code it must return
 #   -DMATCH=regex             a regular expression its stdout+stderr must match (optional)
+#   -DREJECT=regex            a regular expression its stdout+stderr must not match (optional)
 #   -DCHECK=prog|arg|...      a command that must then succeed (optional)
 string(REPLACE "|" ";" run "${RUN}")
 execute_process(COMMAND ${run} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -11,6 +12,9 @@ if (NOT "${rc}" STREQUAL "${EXIT_CODE}")
 endif ()
 if (DEFINED MATCH AND NOT "${out}${err}" MATCHES "${MATCH}")
   message(FATAL_ERROR "the output does not match: ${MATCH}")
+endif ()
+if (DEFINED REJECT AND "${out}${err}" MATCHES "${REJECT}")
+  message(FATAL_ERROR "the output matches what it must not: ${REJECT}")
 endif ()
 if (DEFINED CHECK)
   string(REPLACE "|" ";" check "${CHECK}")

@@ -28,6 +28,7 @@
 #include "rfBenchPicture.h"
 #include "rfBenchReference.h"
 #include "rfBenchReport.h"
+#include "rfBenchScaling.h"
 #include "rfBenchRow.h"
 #include "rfBenchScene.h"
 #include "rfBenchSettings.h"
@@ -107,13 +108,18 @@ int main(int argc, char* argv[])
     return 2;
   }
   const int maxSize = *std::max_element(options.Sizes.begin(), options.Sizes.end());
+  int surfaceWidth = std::max(maxSize, 1200), surfaceHeight = std::max(maxSize, 900);
+  if (options.Scaling)
+  {
+    ScalingWindowSize(options, surfaceWidth, surfaceHeight);
+  }
   vtkSmartPointer<vtkRenderWindow> window;
   std::string windowPath = "GLX window";
   if (!options.X11)
   {
     std::string error;
-    window = vtkRefractionCreateEGLWindow(
-      std::max(maxSize, 1200), std::max(maxSize, 900), &error, &windowPath);
+    window =
+      vtkRefractionCreateEGLWindow(surfaceWidth, surfaceHeight, &error, &windowPath);
     if (!window)
     {
       std::fprintf(stderr, "EGL unavailable (%s); using an X window\n", error.c_str());
@@ -172,7 +178,7 @@ int main(int argc, char* argv[])
   }
   if (options.Out.empty())
   {
-    options.Out = "bench/results/" + HostKind(rendererName);
+    options.Out = "bench/results/" + HostKind(rendererName) + (options.Scaling ? "-scaling" : "");
   }
   if (!vtksys::SystemTools::MakeDirectory(options.Out))
   {
@@ -181,6 +187,11 @@ int main(int argc, char* argv[])
   }
   std::printf("renderer %s (%s); results in %s\n", rendererName.c_str(), windowPath.c_str(),
     options.Out.c_str());
+  if (options.Scaling)
+  {
+    renderer->SetEnvironmentTexture(environment);
+    return RunScaling(window, renderer, options, rendererName) ? 0 : 1;
+  }
   const auto runStart = std::chrono::steady_clock::now();
   auto elapsed = [&runStart]() {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();

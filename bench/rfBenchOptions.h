@@ -24,6 +24,7 @@ struct Options
   bool X11 = false;
   bool Dump = false;
   bool Convergence = false; // also the full reference at twice the samples per side
+  bool Scaling = false;     // the scaling sweep instead of the rows (rfBenchScaling)
   std::string FromCsv;
   std::string Environment = "builtin";
   std::string Bunny = "/usr/share/glmark2/models/bunny.obj";

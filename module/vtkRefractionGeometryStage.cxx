@@ -270,25 +270,35 @@ void vtkRefractionGeometryStage::DrawBack(vtkOpenGLRenderer* ren, vtkRefractionT
 
 //------------------------------------------------------------------------------
 bool vtkRefractionGeometryStage::DrawPeel(
-  vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layer)
+  vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layer, bool askWhetherEmpty)
 {
   if (!this->Peel || layer < 1 || layer > 7)
   {
     return false;
   }
-  if (this->PeelQuery == 0)
+  if (askWhetherEmpty && this->PeelQuery == 0)
   {
     glGenQueries(1, &this->PeelQuery);
   }
   this->PeelPrevious = targets->Get(
     layer == 1 ? vtkRefractionTargets::FRONT_SURFACE : vtkRefractionTargets::PEEL_1 + layer - 2);
   this->PeelPrevious->Activate();
-  glBeginQuery(GL_ANY_SAMPLES_PASSED, this->PeelQuery);
+  if (askWhetherEmpty)
+  {
+    glBeginQuery(GL_ANY_SAMPLES_PASSED, this->PeelQuery);
+  }
   this->DrawIntoTargets(ren, targets, { vtkRefractionTargets::PEEL_1 + layer - 1 },
     vtkRefractionTargets::PEEL_Z, 1.0, GL_LESS, STAGE_PEEL);
-  glEndQuery(GL_ANY_SAMPLES_PASSED);
+  if (askWhetherEmpty)
+  {
+    glEndQuery(GL_ANY_SAMPLES_PASSED);
+  }
   this->PeelPrevious->Deactivate();
   this->PeelPrevious = nullptr;
+  if (!askWhetherEmpty)
+  {
+    return true;
+  }
   // Read now: the next layer would be drawn for nothing. On llvmpipe the wait is the layer's
   // own rasterization, which the next draw waited for anyway (it reads this layer).
   GLuint anyKept = 1;

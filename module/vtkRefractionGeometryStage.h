@@ -67,7 +67,10 @@ public:
   /// PEEL's layer `layer` (1..7: PEEL_1..PEEL_7), peeled behind the layer before it (layer
   /// 0 is FRONT_SURFACE, drawn first). Returns whether any fragment of the glass was kept (an
   /// occlusion query, read at once): an empty layer leaves nothing for the ones behind it.
-  bool DrawPeel(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layer);
+  /// With `askWhetherEmpty` false no query is made (true is returned): across MPI ranks every
+  /// layer is drawn anyway, and the read would wait for each layer for nothing.
+  bool DrawPeel(
+    vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layer, bool askWhetherEmpty = true);
   /// SSP's refraction mask into the alpha of the framebuffer bound now.
   void DrawMask(vtkOpenGLRenderer* ren);
   /// The glass props into the framebuffer bound now (the renderer's viewport) for `stage`,

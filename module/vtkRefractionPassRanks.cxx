@@ -22,13 +22,14 @@ bool vtkRefractionPass::CompositeAcrossRanks(vtkOpenGLRenderer* ren,
   bool dataColour, bool sceneCapture, bool compositingBackground,
   vtkRefractionRankExchange* exchange)
 {
-  // Every rank's G-buffers drawn (PEEL's layers too), then merged on rank 0, which shades.
+  // Every rank's G-buffers drawn (PEEL's layers too, all of them: a layer empty on one rank
+  // may hold glass on another), then merged on rank 0, which shades.
   if (peelLayers > 1)
   {
     this->StageTimers->Start(TIMED_BACK_CAPTURE);
     for (int layer = 1; layer < peelLayers; ++layer)
     {
-      this->GeometryStage->DrawPeel(ren, this->Targets, layer);
+      this->GeometryStage->DrawPeel(ren, this->Targets, layer, false);
     }
     this->StageTimers->Stop(TIMED_BACK_CAPTURE);
   }

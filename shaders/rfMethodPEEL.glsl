@@ -141,10 +141,12 @@ int rfPeelTrace(vec3 P1, vec3 T1, int material, int channel, bool split, out vec
     // interface, and one more only where that one reflected it back inside (not beyond its
     // exit: marching on outside the glass, where the share rarely meets glass again, took a
     // fifth of a full-screen sphere's frame on llvmpipe).
-    rfk_peel_follow(0, RF_PEEL_LAYERS, channel, rfCamera(), branch, 1, RF_PEEL_BOUNCES,
-      RF_TIR_POLICY, rfGlassExtent, rfGlassDepthRange, false, unused, unusedWeight);
-    if (interfaces > 1 && !branch.ended && rfk_peel_stack_top(branch.stack) >= 0)
+    for (int followed = 0; followed < min(interfaces, 2); ++followed)
     {
+      if (followed > 0 && (branch.ended || rfk_peel_stack_top(branch.stack) < 0))
+      {
+        break;
+      }
       rfk_peel_follow(0, RF_PEEL_LAYERS, channel, rfCamera(), branch, 1, RF_PEEL_BOUNCES,
         RF_TIR_POLICY, rfGlassExtent, rfGlassDepthRange, false, unused, unusedWeight);
     }

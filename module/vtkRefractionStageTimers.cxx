@@ -36,11 +36,14 @@ void vtkRefractionStageTimers::Start(int stage)
   {
     timer = std::make_unique<vtkOpenGLRenderTimer>();
   }
-  if (timer->Ready())
+  // Ready() asks GL about both queries: on a timer not started or not stopped yet it would ask
+  // about query 0 (GL_INVALID_OPERATION), so only a stopped timer is asked.
+  const bool stopped = timer->Started() && timer->Stopped();
+  if (stopped && timer->Ready())
   {
     this->Milliseconds[stage] = timer->GetElapsedMilliseconds();
   }
-  if (!timer->Started() || timer->Ready())
+  if (!timer->Started() || (stopped && timer->Ready()))
   {
     timer->Reset();
     timer->Start();

@@ -114,6 +114,10 @@ void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
       defines << "#define RF_SIGNED_FRONT\n";
     }
   }
+  if (this->SampleComposite)
+  {
+    defines << "#define RF_SAMPLE_COMPOSITE\n";
+  }
   this->UseSHTransfer = shTransfer;
   this->SHTransfer->Retain(shTransfer ? glass : std::vector<vtkProp*>());
   if (shTransfer)
@@ -333,6 +337,13 @@ void vtkRefractionGeometryStage::DrawMask(vtkOpenGLRenderer* ren)
 //------------------------------------------------------------------------------
 void vtkRefractionGeometryStage::DrawOnScreen(vtkOpenGLRenderer* ren, int stage)
 {
+  if (stage == STAGE_COMPOSITE && !this->SampleComposite)
+  {
+    // The program would run the G-buffer's code and write it onto the screen.
+    vtkErrorMacro("The composite at the samples was not configured for this frame "
+                  "(SetSampleComposite before Configure); the glass is not drawn there.");
+    return;
+  }
   ren->GetTiledSizeAndOrigin(&this->Width, &this->Height, this->Origin, this->Origin + 1);
   this->DrawProps(ren, stage);
 }

@@ -99,6 +99,11 @@ public:
   /// surface may become a deeper layer of the whole; vtkRefractionGBufferComposite removes the
   /// sign from the merged front layer. Takes effect at the next Configure.
   void SetSignedFront(bool signedFront) { this->SignedFront = signedFront; }
+  /// Whether the frame draws STAGE_COMPOSITE (vtkRefractionSampleComposite): only then is the
+  /// composite's code compiled into the mapper's program (llvmpipe runs both sides of a
+  /// branch, so it would cost every G-buffer draw its fetches). Takes effect at the next
+  /// Configure.
+  void SetSampleComposite(bool sampleComposite) { this->SampleComposite = sampleComposite; }
   /// The glass meshes' surface model (solid or thin sheet, per connected piece).
   vtkRefractionSurfaceModel* GetSurfaceModel() { return this->SurfaceModel; }
 
@@ -152,6 +157,7 @@ private:
   bool BackNearest = false;
   bool Peel = false;
   bool SignedFront = false;
+  bool SampleComposite = false;
   vtkTextureObject* PeelPrevious = nullptr; ///< the layer the one being drawn peels behind
   unsigned int PeelQuery = 0;               ///< DrawPeel's occlusion query (0: none yet)
   bool Parallel = false;

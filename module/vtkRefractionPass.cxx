@@ -402,6 +402,7 @@ void vtkRefractionPass::RenderGlass(
   this->GeometryStage->SetSHSmoothing(this->SHSmoothing);
   this->GeometryStage->SetSheetPieceMaterials(this->Materials->GetSheetPieceMaterial());
   this->GeometryStage->SetSignedFront(exchange && peelLayers > 1);
+  this->GeometryStage->SetSampleComposite(frame.SampleComposite);
   this->GeometryStage->Configure(glass, method->NeedsNormalDistance(), dataColour,
     this->BackSurface == BACK_SURFACE_NEAREST, peelLayers > 1, method->NeedsSHTransfer(),
     frame.InverseProjection, frame.Parallel);

@@ -4,7 +4,9 @@
 // Coincident::Impl tag (the end of main). Nothing else runs per fragment: VTK's lighting is
 // left out (the refraction replaces the colour) and the refraction itself runs once per pixel
 // in the shading stage (rfShadeFS.glsl). One program serves every stage (rfGeometryStage
-// selects), so switching stages costs no shader rebuild.
+// selects), so switching stages costs no shader rebuild; only the composite (stage 5) is
+// compiled in just for frames that draw it (RF_SAMPLE_COMPOSITE): llvmpipe runs both sides of
+// a branch under a mask, and the composite's fetches took about a third of each G-buffer draw.
 //  1 front: octahedral view-space normal facing the viewer, -z_view, material index + 1 (a
 //    cleared texel, 0, is no glass); with RF_GBUFFER_COLOUR (output 1) the data's
 //    colour VTK computed (the actor's, or the scalars through the lookup table; alpha: how much
@@ -60,15 +62,18 @@ uniform int rfHaveNormalDistance;
 uniform float rfModelScale;
 #endif
 
+#ifdef RF_SAMPLE_COMPOSITE
 // STAGE 5: FRONT_SURFACE (for the material at each pixel) and GLASS_COLOR (the shaded glass,
 // at the pixels or, rfCompositeCorners, at their lower-left corners as rfShadeFS.glsl writes
 // it with RF_CORNER_SAMPLES).
 uniform sampler2D rfCompositeSurface;
 uniform sampler2D rfCompositeColour;
 uniform int rfCompositeCorners;
+#endif
 
 //RF::Common
 
+#ifdef RF_SAMPLE_COMPOSITE
 // The shaded glass at pixel p: its colour, or with corners the mean of those of its four
 // corners that lie on the glass; alpha 0 where it has none.
 vec4 rfCompositeAt(ivec2 p, ivec2 last)
@@ -123,6 +128,7 @@ vec4 rfSampleComposite(float material)
   vec4 sum = same.a > 0.5 ? same : other;
   return sum.a > 0.5 ? vec4(sum.rgb / sum.a, 1.0) : vec4(0.0);
 }
+#endif
 
 // The unit shading normal; where it is unusable the face normal from the position's
 // derivatives, else the direction toward the eye. Unusable: zero, tiny or not finite (VTK has
@@ -161,6 +167,7 @@ vec3 rfReconstructPositionVC()
 }
 
 //RF::Impl
+#ifdef RF_SAMPLE_COMPOSITE
   if (rfGeometryStage == 5)
   {
     vec4 rfComposite = rfSampleComposite(RF_FRAGMENT_MATERIAL);
@@ -171,6 +178,7 @@ vec3 rfReconstructPositionVC()
     gl_FragData[0] = rfComposite;
   }
   else
+#endif
   {
     vec4 rfDataColour = gl_FragData[0]; // RF_DATA_COLOUR, as VTK's colour code left it
     vec3 rfP = RF_POSITION_VC;

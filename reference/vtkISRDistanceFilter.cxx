@@ -7,6 +7,7 @@
 #include "vtkFloatArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMultiThreader.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -14,15 +15,23 @@
 #include "vtkRefractionGlassChecker.h"
 #include "vtkTimerLog.h"
 
+#include <algorithm>
 #include <string>
 
 vtkStandardNewMacro(vtkISRDistanceFilter);
+
+//------------------------------------------------------------------------------
+vtkISRDistanceFilter::vtkISRDistanceFilter()
+  : Threads(std::max(1, vtkMultiThreader::GetGlobalDefaultNumberOfThreads()))
+{
+}
 
 //------------------------------------------------------------------------------
 void vtkISRDistanceFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "LastComputeSeconds: " << this->LastComputeSeconds << "\n";
+  os << indent << "Threads: " << this->Threads << "\n";
 }
 
 //------------------------------------------------------------------------------
@@ -67,7 +76,7 @@ int vtkISRDistanceFilter::RequestData(
   this->UpdateProgress(0.3);
   const rf_status status = rf_normal_distances(mesh.Positions.data(), mesh.Normals.data(),
     static_cast<size_t>(pointCount), mesh.Triangles.data(), mesh.Triangles.size() / 3,
-    static_cast<float*>(distances->GetVoidPointer(0)));
+    static_cast<float*>(distances->GetVoidPointer(0)), this->Threads);
   timer->StopTimer();
   this->LastComputeSeconds = timer->GetElapsedTime();
   if (status != RF_OK)

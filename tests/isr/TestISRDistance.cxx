@@ -1,7 +1,11 @@
 // ISR's per-vertex d_N against closed forms: on a sphere the inward normal runs through the
 // centre, so d_N is the diameter; on a slab (a thin box) it is the thickness; on an open
-// mesh (a hemisphere's rim ray leaves it) the filter reports 0 rather than garbage.
+// mesh (a hemisphere's rim ray leaves it) the filter reports 0 rather than garbage. The rays
+// are cast in packets of 8 on Threads threads: any thread count gives the same distances (a
+// vertex count that is no multiple of 8 or of the threads, so partial packets and uneven runs
+// are met), and the C core refuses 0 threads.
 #include "../common/rf_require.h"
+#include "rf_normal_distance.h"
 #include "vtkISRDistanceFilter.h"
 
 #include <vtkCubeSource.h>
@@ -16,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <vector>
 
 
 int main()
@@ -85,5 +90,44 @@ int main()
     RF_REQUIRE(std::isfinite(v) && v >= 0.0 && v <= 2.0 + 1e-6, "open mesh d_N %g", v);
   }
   std::printf("slab: d_N = 0.3 on all %d face vertices; open mesh: all finite\n", faceVertices);
+
+  // The same distances on 1, 2, 3 and 5 threads.
+  vtkNew<vtkSphereSource> odd;
+  odd->SetThetaResolution(37);
+  odd->SetPhiResolution(23);
+  std::vector<float> single;
+  for (int threads : { 1, 2, 3, 5 })
+  {
+    vtkNew<vtkISRDistanceFilter> distances;
+    distances->SetThreads(threads);
+    distances->SetInputConnection(odd->GetOutputPort());
+    distances->Update();
+    vtkDataArray* od = distances->GetOutput()->GetPointData()->GetArray("ISRNormalDistance");
+    RF_REQUIRE(od && od->GetNumberOfTuples() % 8 != 0, "the point count should leave a partial packet");
+    for (vtkIdType i = 0; i < od->GetNumberOfTuples(); ++i)
+    {
+      const float v = static_cast<float>(od->GetComponent(i, 0));
+      if (threads == 1)
+      {
+        RF_REQUIRE(v > 0.9f && v < 1.01f, "d_N %g at vertex %lld of the unit-diameter sphere",
+          v, static_cast<long long>(i));
+        single.push_back(v);
+      }
+      else
+      {
+        RF_REQUIRE(v == single[static_cast<size_t>(i)], "%d threads: d_N %g at vertex %lld, %g on one",
+          threads, v, static_cast<long long>(i), single[static_cast<size_t>(i)]);
+      }
+    }
+  }
+  const float point[3] = { 0.f, 0.f, 0.f };
+  const float normal[3] = { 0.f, 0.f, 1.f };
+  const unsigned triangle[3] = { 0, 0, 0 };
+  float distance = -1.f;
+  RF_REQUIRE(rf_normal_distances(point, normal, 1, triangle, 1, &distance, 0) ==
+      RF_REF_ERR_BAD_OPTION,
+    "0 threads accepted");
+  std::printf("%zu vertices: the same d_N on 1, 2, 3 and 5 threads; 0 threads refused\n",
+    single.size());
   return EXIT_SUCCESS;
 }

@@ -93,7 +93,7 @@ bool Parse(int argc, char* argv[], Options& o)
     "supersampled truth is from it (column ref_ss_convergence_psnr; --supersample 2..8).");
   args.AddBooleanArgument("--scaling", &o.Scaling,
     "Instead of the rows: frame time against triangles (8 thousand to 4 million, at 512) and "
-    "against pixels (512 to 3840x2160, 79,600 triangles), a glass sphere filling the view, each "
+    "against pixels (512 to 3840x2160, 79,200 triangles), a glass sphere filling the view, each "
     "method against plain VTK; writes scaling.csv, scaling.md and two plots (--smoke: tiny).");
   args.AddBooleanArgument("--help", &help, "Print this help.");
   if (!args.Parse())

@@ -134,10 +134,13 @@
 #define rf_material_table int
 vec4 rfPeelLayerTexel(ivec2 texel, int layer);
 int rfPeelLayerSide(ivec2 texel, float depth);
+float rfPeelLayerDepth(ivec2 texel, int layer);
 float rfPeelMaterialIOR(int material, int channel);
 bool rfPeelMaterialSheet(int material);
 #define rf_layer_texel(layers, tc, size, i) \
   rfPeelLayerTexel(ivec2(min((tc) * (size), (size) - 1.0)), i)
+#define rf_layer_depth(layers, tc, size, i) \
+  rfPeelLayerDepth(ivec2(min((tc) * (size), (size) - 1.0)), i)
 #define rf_layer_side(layers, count, tc, size, depth) \
   rfPeelLayerSide(ivec2(min((tc) * (size), (size) - 1.0)), depth)
 #define rf_material_ior(materials, m) rfPeelMaterialIOR(m, materials)

@@ -93,6 +93,19 @@ vec4 rfPeelLayerTexel(ivec2 texel, int layer)
   return vec4(0.0);
 }
 
+// The depth of one layer at a texel, from the depths packed four to a texel: one fetch, where
+// rfPeelLayerTexel goes through every layer's sampler (llvmpipe runs every branch). The packing
+// wrote the layers not drawn this frame as empty, as rfPeelLayerTexel reads them.
+float rfPeelLayerDepth(ivec2 texel, int layer)
+{
+#if RF_PEEL_LAYERS > 4
+  vec4 d = layer < 4 ? texelFetch(rfPeelDepthsA, texel, 0) : texelFetch(rfPeelDepthsB, texel, 0);
+#else
+  vec4 d = texelFetch(rfPeelDepthsA, texel, 0);
+#endif
+  return layer >= 0 && layer < RF_PEEL_LAYERS ? d[layer & 3] : 0.0;
+}
+
 // How many layers at a texel hold a surface nearer than depth, from the depths packed four to
 // a texel (rfLayerPackFS.glsl; unused channels hold 0, which never counts).
 int rfPeelLayerSide(ivec2 texel, float depth)

@@ -18,8 +18,11 @@
  * (peeling makes them so) and the empty ones come last.
  *
  * Two resources GLSL cannot pass as arguments (an array of samplers, an array of indices) are
- * reached through macros the including side defines: rf_layer_texel(layers, tc, size, i) and
- * rf_material_ior(materials, m) / rf_material_is_sheet(materials, m); in C rf_layer_stack and
+ * reached through macros the including side defines: rf_layer_texel(layers, tc, size, i),
+ * rf_layer_depth(layers, tc, size, i) (its z alone: the GLSL side reads it from the depths
+ * packed four to a texel, one fetch where a whole texel runs through every layer's sampler),
+ * rf_layer_side(layers, count, tc, size, depth) and rf_material_ior(materials, m) /
+ * rf_material_is_sheet(materials, m); in C rf_layer_stack and
  * rf_material_table are structs of callbacks and arrays (rf_kernel_prelude.h), in GLSL plain
  * handles the stage resolves (shaders/rfMethodPEEL.glsl). */
 #ifndef RF_KERNEL_PEEL_H
@@ -149,8 +152,8 @@ RF_KERNEL int rfk_peel_next_crossing(rf_layer_stack layers, int count, rfk_camer
       /* Going deeper the ray passed behind layer farSide - 1; coming forward it passed in
        * front of layer farSide. */
       int crossedLayer = farSide > before ? farSide - 1 : farSide;
-      rf_float farDepth = rf_layer_texel(layers, farTC, pixels, crossedLayer).z;
-      rf_float nearDepth = rf_layer_texel(layers, nearTC, pixels, crossedLayer).z;
+      rf_float farDepth = rf_layer_depth(layers, farTC, pixels, crossedLayer);
+      rf_float nearDepth = rf_layer_depth(layers, nearTC, pixels, crossedLayer);
       /* The paper's fault test: across the final bracket the crossed layer's depth changes by
        * X; on a surface X shrinks with the bracket, at a fault it stays the jump. */
       rf_float X = rf_abs(farDepth - nearDepth);
@@ -165,15 +168,14 @@ RF_KERNEL int rfk_peel_next_crossing(rf_layer_stack layers, int count, rfk_camer
         RF_DEREF(hitLayer) = crossedLayer;
         return RF_PEEL_SURFACE;
       }
-      if (inside && !(rf_layer_texel(layers, farTC, pixels, 0).z > 0.0))
+      if (inside && !(rf_layer_depth(layers, farTC, pixels, 0) > 0.0))
       {
         /* Off the glass's footprint from inside: through the layer nearest the ray at the
          * last texel on the glass (before - 1 in front of it, before behind it). */
         rf_float depth = -nearQ.z;
         int front = before > 0 ? before - 1 : 0;
-        rf_float frontDepth = rf_layer_texel(layers, nearTC, pixels, front).z;
-        rf_float backDepth =
-          before < count ? rf_layer_texel(layers, nearTC, pixels, before).z : 0.0;
+        rf_float frontDepth = rf_layer_depth(layers, nearTC, pixels, front);
+        rf_float backDepth = before < count ? rf_layer_depth(layers, nearTC, pixels, before) : 0.0;
         rf_bool useBack = backDepth > 0.0 && (before == 0 || backDepth - depth < depth - frontDepth);
         RF_DEREF(hit) = rf_scale3(rf_add3(nearQ, farQ), 0.5);
         RF_DEREF(hitTC) = nearTC;

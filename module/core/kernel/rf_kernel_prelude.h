@@ -184,6 +184,12 @@ static inline rf_float4 rf_layer_texel(rf_layer_stack layers, rf_float2 tc, rf_f
   return layers.texel(layers.context, at, i);
 }
 
+/* The depth (z) of layer i at tc. */
+static inline double rf_layer_depth(rf_layer_stack layers, rf_float2 tc, rf_float2 size, int i)
+{
+  return rf_layer_texel(layers, tc, size, i).z;
+}
+
 /* How many of the first `count` layers at tc hold a surface nearer than depth. */
 static inline int rf_layer_side(rf_layer_stack layers, int count, rf_float2 tc, rf_float2 size,
   double depth)

@@ -6,7 +6,7 @@
 // in the shading stage (rfShadeFS.glsl). One program serves every stage (rfGeometryStage
 // selects), so switching stages costs no shader rebuild; only the composite (stage 5) is
 // compiled in just for frames that draw it (RF_SAMPLE_COMPOSITE): llvmpipe runs both sides of
-// a branch under a mask, and the composite's fetches took about a third of each G-buffer draw.
+// a branch under a mask, and the composite's fetches took half or more of each G-buffer draw.
 //  1 front: octahedral view-space normal facing the viewer, -z_view, material index + 1 (a
 //    cleared texel, 0, is no glass); with RF_GBUFFER_COLOUR (output 1) the data's
 //    colour VTK computed (the actor's, or the scalars through the lookup table; alpha: how much

@@ -199,11 +199,7 @@ bool WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
   if (meshes.empty())
     return true; // nothing to plot
   vtkNew<vtkContextView> view;
-  while (window->GetRenderers()->GetFirstRenderer())
-  {
-    window->RemoveRenderer(window->GetRenderers()->GetFirstRenderer());
-  }
-  view->SetRenderWindow(window);
+  ShowChartView(window, view);
   window->SetSize(1200, 900);
   const int columns = meshes.size() > 1 ? 2 : 1;
   const int rowsCount = static_cast<int>((meshes.size() + columns - 1) / columns);
@@ -277,6 +273,20 @@ bool WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
       axis->SetRange(0.0, largest[a] > 0.0 ? 1.1 * largest[a] : 1.0);
     }
   }
+  return WriteChartPng(window, view, path);
+}
+
+void ShowChartView(vtkRenderWindow* window, vtkContextView* view)
+{
+  while (window->GetRenderers()->GetFirstRenderer())
+  {
+    window->RemoveRenderer(window->GetRenderers()->GetFirstRenderer());
+  }
+  view->SetRenderWindow(window);
+}
+
+bool WriteChartPng(vtkRenderWindow* window, vtkContextView* view, const std::string& path)
+{
   view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
   window->Render();
   vtkNew<vtkWindowToImageFilter> grab;

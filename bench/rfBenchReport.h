@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+class vtkContextView;
 class vtkRenderWindow;
 
 namespace rfbench
@@ -18,6 +19,12 @@ std::string Db(double v);
 // Writes results.md; `run` describes the run (environment, repeats, load).
 bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
   const std::string& renderer, const std::string& windowPath, const std::string& run);
+
+// Puts a chart view in the window in place of its renderers.
+void ShowChartView(vtkRenderWindow* window, vtkContextView* view);
+
+// Renders the chart view over white and writes the window to a PNG; false when it cannot.
+bool WriteChartPng(vtkRenderWindow* window, vtkContextView* view, const std::string& path);
 
 // Draws pareto.png in the window (its renderers are taken out).
 bool WritePareto(vtkRenderWindow* window, const std::string& path, const std::vector<Row>& rows);

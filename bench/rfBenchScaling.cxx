@@ -1,5 +1,6 @@
 #include "rfBenchScaling.h"
 
+#include "rfBenchReport.h"
 #include "rfBenchScene.h"
 #include "rfBenchSettings.h"
 #include "rfBenchTiming.h"
@@ -16,18 +17,15 @@
 #include <vtkDoubleArray.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPlot.h>
 #include <vtkPlotPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkRendererCollection.h>
 #include <vtkSphereSource.h>
 #include <vtkStringArray.h>
 #include <vtkTable.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -114,12 +112,8 @@ bool Plot(vtkRenderWindow* window, const std::string& path, const std::string& t
   const std::string& xTitle, const std::vector<std::string>& methods,
   const std::map<std::string, std::vector<std::pair<double, double>>>& lines)
 {
-  while (window->GetRenderers()->GetFirstRenderer())
-  {
-    window->RemoveRenderer(window->GetRenderers()->GetFirstRenderer());
-  }
   vtkNew<vtkContextView> view;
-  view->SetRenderWindow(window);
+  ShowChartView(window, view);
   window->SetSize(900, 700);
   vtkNew<vtkChartXY> chart;
   view->GetScene()->AddItem(chart);
@@ -183,16 +177,7 @@ bool Plot(vtkRenderWindow* window, const std::string& path, const std::string& t
     // A margin of a fifth of a decade, so that no point is drawn on the frame.
     axis->SetUnscaledRange(range[a][0] / 1.6, range[a][1] * 1.6);
   }
-  view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
-  window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputConnection(grab->GetOutputPort());
-  writer->SetFileName(path.c_str());
-  writer->Write();
-  return writer->GetErrorCode() == 0;
+  return WriteChartPng(window, view, path);
 }
 }
 

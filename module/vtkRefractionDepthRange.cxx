@@ -19,6 +19,8 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <sstream>
+#include <string>
 
 vtkStandardNewMacro(vtkRefractionDepthRange);
 
@@ -30,28 +32,21 @@ vtkRefractionDepthRange::~vtkRefractionDepthRange() = default;
 void vtkRefractionDepthRange::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Reduction shader: " << (this->Quad ? "built" : "not built") << "\n";
+  os << indent << "Reduction shaders: " << (this->FirstQuad && this->LaterQuad ? "built" : "not built")
+     << "\n";
 }
 
 //------------------------------------------------------------------------------
 bool vtkRefractionDepthRange::Reduce(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets)
 {
-  vtkOpenGLState* ostate = renWin->GetState();
-  if (!this->Quad)
-  {
-    this->Quad.reset(new vtkOpenGLQuadHelper(renWin,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), rfReductionFSSource, ""));
-  }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-  }
-  vtkShaderProgram* program = this->Quad->Program;
-  if (!program || !program->GetCompiled())
+  vtkShaderProgram* first = this->ReadyProgram(renWin, this->FirstQuad, true);
+  vtkShaderProgram* later = this->ReadyProgram(renWin, this->LaterQuad, false);
+  if (!first || !later)
   {
     vtkErrorMacro("Could not build the depth-range reduction shader.");
     return false;
   }
+  vtkOpenGLState* ostate = renWin->GetState();
   vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
   fbo->SaveCurrentBindingsAndBuffers();
   fbo->Bind();
@@ -67,6 +62,9 @@ bool vtkRefractionDepthRange::Reduce(vtkOpenGLRenderWindow* renWin, vtkRefractio
     const auto& levels = targets->GetReductionLevels();
     for (size_t level = 0; level < levels.size(); ++level)
     {
+      vtkOpenGLQuadHelper* quad = level == 0 ? this->FirstQuad.get() : this->LaterQuad.get();
+      vtkShaderProgram* program = level == 0 ? first : later;
+      renWin->GetShaderCache()->ReadyShaderProgram(program);
       vtkTextureObject* target = levels[level];
       fbo->AddColorAttachment(0, target);
       fbo->ActivateDrawBuffers(1);
@@ -79,10 +77,9 @@ bool vtkRefractionDepthRange::Reduce(vtkOpenGLRenderWindow* renWin, vtkRefractio
       const int size[2] = { static_cast<int>(source->GetWidth()),
         static_cast<int>(source->GetHeight()) };
       program->SetUniform2i("rfSourceSize", size);
-      program->SetUniformi("rfFirstLevel", level == 0 ? 1 : 0);
       const int targetSize[2] = { w, h };
       program->SetUniform2i("rfTargetSize", targetSize);
-      this->Quad->Render();
+      quad->Render();
       source->Deactivate();
       source = target;
     }
@@ -90,6 +87,25 @@ bool vtkRefractionDepthRange::Reduce(vtkOpenGLRenderWindow* renWin, vtkRefractio
   fbo->UnBind();
   fbo->RestorePreviousBindingsAndBuffers();
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkShaderProgram* vtkRefractionDepthRange::ReadyProgram(
+  vtkOpenGLRenderWindow* renWin, std::unique_ptr<vtkOpenGLQuadHelper>& quad, bool firstLevel)
+{
+  if (!quad)
+  {
+    std::string source = rfReductionFSSource;
+    std::ostringstream defines;
+    defines << "//VTK::System::Dec\n#define RF_REDUCTION_BLOCK "
+            << vtkRefractionTargets::ReductionBlock << "\n"
+            << (firstLevel ? "#define RF_REDUCTION_FIRST\n" : "");
+    vtkShaderProgram::Substitute(source, "//VTK::System::Dec", defines.str());
+    quad.reset(new vtkOpenGLQuadHelper(renWin,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str(), ""));
+  }
+  vtkShaderProgram* program = quad->Program;
+  return program && program->GetCompiled() ? program : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -126,9 +142,12 @@ void vtkRefractionDepthRange::ComputeBounds(
 //------------------------------------------------------------------------------
 void vtkRefractionDepthRange::ReleaseGraphicsResources(vtkWindow* w)
 {
-  if (this->Quad)
+  for (auto* quad : { &this->FirstQuad, &this->LaterQuad })
   {
-    this->Quad->ReleaseGraphicsResources(w);
-    this->Quad.reset();
+    if (*quad)
+    {
+      (*quad)->ReleaseGraphicsResources(w);
+      quad->reset();
+    }
   }
 }

@@ -2,8 +2,9 @@
  * @class   vtkRefractionDepthRange
  * @brief   DIR pass 2: the range [Zmin, Zmax] of the captured back depths.
  *
- * Either a min/max reduction on the GPU by halving full-screen passes (GLSL 1.50 has no
- * compute shaders here) into the targets' RG32F chain, down to 1x1 (R = min, G = max), or,
+ * Either a min/max reduction on the GPU by full-screen passes over blocks of
+ * vtkRefractionTargets::ReductionBlock texels a side (GLSL 1.50 has no compute shaders here)
+ * into the targets' RG32F chain, down to 1x1 (R = min, G = max), or,
  * as the paper's section 5 suggests, the range of the glass props' bounding boxes on the CPU.
  */
 #ifndef vtkRefractionDepthRange_h
@@ -19,6 +20,7 @@ class vtkOpenGLRenderWindow;
 class vtkProp;
 class vtkRefractionTargets;
 class vtkRenderer;
+class vtkShaderProgram;
 class vtkWindow;
 
 class vtkRefractionDepthRange : public vtkObject
@@ -42,10 +44,17 @@ protected:
   ~vtkRefractionDepthRange() override;
 
 private:
+  // The program of the first pass or of the later ones, built on first use; nullptr when it
+  // does not compile.
+  vtkShaderProgram* ReadyProgram(
+    vtkOpenGLRenderWindow* renWin, std::unique_ptr<vtkOpenGLQuadHelper>& quad, bool firstLevel);
+
   vtkRefractionDepthRange(const vtkRefractionDepthRange&) = delete;
   void operator=(const vtkRefractionDepthRange&) = delete;
 
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  // The first pass (reads the back capture's depths) and the later ones (read min and max).
+  std::unique_ptr<vtkOpenGLQuadHelper> FirstQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> LaterQuad;
 };
 
 #endif

@@ -183,8 +183,8 @@ void vtkRefractionTargets::Update(vtkOpenGLRenderWindow* renWin, int width, int 
     int h = height;
     do
     {
-      w = (w + 1) / 2;
-      h = (h + 1) / 2;
+      w = (w + ReductionBlock - 1) / ReductionBlock;
+      h = (h + ReductionBlock - 1) / ReductionBlock;
       this->ReductionLevels.push_back(
         MakeColorTexture(renWin, w, h, 2, GL_RG32F, GL_RG, vtkTextureObject::Nearest));
       this->ReductionBytes += MeasureBytes(this->ReductionLevels.back());

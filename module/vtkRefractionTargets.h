@@ -72,7 +72,10 @@ public:
 
   /// The target, or nullptr when it is not allocated.
   vtkTextureObject* Get(int target) const;
-  /// The reduction chain, halving down to 1x1 (RG32F: min, max); empty when not allocated.
+  /// How many texels each side of a reduction pass's block holds: every level of the chain is
+  /// this many times smaller than the one before (rounded up).
+  static constexpr int ReductionBlock = 4;
+  /// The reduction chain, down to 1x1 (RG32F: min, max); empty when not allocated.
   const std::vector<vtkSmartPointer<vtkTextureObject>>& GetReductionLevels() const
   {
     return this->ReductionLevels;

@@ -6,7 +6,8 @@
 // = 4 for the methods that tint (all but SSP) when the glass has a colour (it is light blue
 // here; white glass needs none); back capture RGBA32F normal and depth + DEPTH32F
 // = 20; ISR's d_N R32F = 4; SSP's scene copy RGBA8 = 4; DIR's
-// reduction chain RG32F = 8 per texel of each halved level; PEEL's K - 1 peeled layers RGBA32F
+// reduction chain RG32F = 8 per texel of each level, each a quarter of the one before on
+// each side (blocks of 4 x 4 texels, rounded up); PEEL's K - 1 peeled layers RGBA32F
 // and their DEPTH32F = 16 (K - 1) + 4, and the layers' depths packed into RGBA32F, one for
 // K <= 4, two above; anti-aliasing's corner depth buffer DEPTH32F = 4; the debug output
 // 2 x RGBA32F.
@@ -37,8 +38,8 @@ unsigned long long ReductionTexels(int width, int height)
   unsigned long long texels = 0;
   do
   {
-    width = (width + 1) / 2;
-    height = (height + 1) / 2;
+    width = (width + 3) / 4;
+    height = (height + 3) / 4;
     texels += static_cast<unsigned long long>(width) * height;
   } while (width > 1 || height > 1);
   return texels;

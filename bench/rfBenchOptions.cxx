@@ -90,7 +90,7 @@ bool Parse(int argc, char* argv[], Options& o)
   args.AddBooleanArgument("--dump", &o.Dump, "Also write every picture and reference as PNG.");
   args.AddBooleanArgument("--convergence", &o.Convergence,
     "Also trace the full reference at twice --supersample per side and report how far the "
-    "supersampled truth is from it (column ref_ss_convergence_psnr; --supersample 2..8).");
+    "supersampled truth is from it (column ref_ss_convergence_psnr; --supersample 2..16).");
   args.AddBooleanArgument("--scaling", &o.Scaling,
     "Instead of the rows: frame time against triangles (8 thousand to 4 million, at 512) and "
     "against pixels (512 to 3840x2160, 79,200 triangles), a glass sphere filling the view, each "
@@ -172,9 +172,9 @@ bool Parse(int argc, char* argv[], Options& o)
                          "range\n");
     return false;
   }
-  if (o.Convergence && o.Supersample > 8)
+  if (o.Convergence && o.Supersample > 16)
   {
-    std::fprintf(stderr, "--convergence traces 2 x --supersample per side: at most 8, not %d\n",
+    std::fprintf(stderr, "--convergence traces 2 x --supersample per side: at most 16, not %d\n",
       o.Supersample);
     return false;
   }

@@ -123,8 +123,8 @@ public:
 
   ///@{
   /// Rays per pixel along each side: 1 (the default) shades the pixel centre as the pass
-  /// does; N shades an N x N grid and averages (1..16).
-  vtkSetClampMacro(SamplesPerSide, int, 1, 16);
+  /// does; N shades an N x N grid and averages (1..32).
+  vtkSetClampMacro(SamplesPerSide, int, 1, 32);
   vtkGetMacro(SamplesPerSide, int);
   ///@}
 

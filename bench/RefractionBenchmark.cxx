@@ -27,6 +27,7 @@
 #include "rfBenchOptions.h"
 #include "rfBenchPicture.h"
 #include "rfBenchReference.h"
+#include "rfBenchPareto.h"
 #include "rfBenchReport.h"
 #include "rfBenchScaling.h"
 #include "rfBenchRow.h"

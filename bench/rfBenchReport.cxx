@@ -1,23 +1,15 @@
 #include "rfBenchReport.h"
 
+#include "rfBenchPareto.h"
 #include "rfBenchTiming.h"
 #include "vtkRefractionPass.h"
 
-#include <vtkAxis.h>
-#include <vtkChartLegend.h>
-#include <vtkChartMatrix.h>
-#include <vtkChartXY.h>
-#include <vtkContextScene.h>
 #include <vtkContextView.h>
-#include <vtkFloatArray.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
-#include <vtkPlot.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
-#include <vtkTable.h>
-#include <vtkVector.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
@@ -131,7 +123,8 @@ bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
       any->RefFullMs / 1000.0, any->RefFullSSMs / 1000.0);
     f << line;
   }
-  f << "\n## All rows\n\n| mesh | size | method | ms [min-max] | ratio [min-max] | stage ms | "
+  f << "\n" << ParetoSummary(rows);
+  f << "## All rows\n\n| mesh | size | method | ms [min-max] | ratio [min-max] | stage ms | "
        "pre ms | B/px | PSNR two | PSNR full | PSNR full SS | model vs full SS | SSIM full SS | TIR / "
        "rest (full SS) | rim (full SS) | brightness | TIR / rest (two) | T2 deg mean/p95 | TIR px |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -183,97 +176,6 @@ bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
   }
   f.flush();
   return static_cast<bool>(f);
-}
-
-bool WritePareto(vtkRenderWindow* window, const std::string& path, const std::vector<Row>& rows)
-{
-  std::vector<std::string> meshes;
-  int plotSize = 0;
-  for (const Row& r : rows)
-  {
-    if (std::find(meshes.begin(), meshes.end(), r.Mesh) == meshes.end())
-      meshes.push_back(r.Mesh);
-    if (plotSize == 0 || std::abs(r.Size - 512) < std::abs(plotSize - 512))
-      plotSize = r.Size;
-  }
-  if (meshes.empty())
-    return true; // nothing to plot
-  vtkNew<vtkContextView> view;
-  ShowChartView(window, view);
-  window->SetSize(1200, 900);
-  const int columns = meshes.size() > 1 ? 2 : 1;
-  const int rowsCount = static_cast<int>((meshes.size() + columns - 1) / columns);
-  vtkNew<vtkChartMatrix> matrix;
-  view->GetScene()->AddItem(matrix);
-  matrix->SetSize(vtkVector2i(columns, rowsCount));
-  const char* families[] = { "SIR", "DIR reduction", "DIR bbox", "DIR adaptive", "ISR", "SSP",
-    "DIR paper (no secant)", "DIR nearest back", "PEEL", "SH" };
-  const unsigned char colours[][3] = { { 120, 120, 120 }, { 31, 119, 180 }, { 255, 127, 14 },
-    { 44, 160, 44 }, { 214, 39, 40 }, { 148, 103, 189 }, { 140, 86, 75 }, { 23, 190, 207 },
-    { 227, 119, 194 }, { 188, 189, 34 } };
-  for (size_t m = 0; m < meshes.size(); ++m)
-  {
-    vtkChart* chart = matrix->GetChart(vtkVector2i(static_cast<int>(m % columns),
-      rowsCount - 1 - static_cast<int>(m / columns)));
-    chart->SetTitle(meshes[m] + " " + std::to_string(plotSize) + "x" + std::to_string(plotSize));
-    chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("frame time / plain VTK (median of repeats)");
-    chart->GetAxis(vtkAxis::LEFT)->SetTitle("RMSE against the supersampled full reference");
-    chart->SetShowLegend(m == 0);
-    double largest[2] = { 0.0, 0.0 }; // x, y over every plotted point
-    for (int family = 0; family < 10; ++family)
-    {
-      vtkNew<vtkTable> table;
-      vtkNew<vtkFloatArray> x;
-      vtkNew<vtkFloatArray> y;
-      x->SetName("ratio");
-      y->SetName(families[family]);
-      table->AddColumn(x);
-      table->AddColumn(y);
-      std::vector<std::pair<double, double>> points;
-      for (const Row& r : rows)
-      {
-        if (r.Mesh != meshes[m] || r.Size != plotSize || r.Config.Method == "none" ||
-          r.Config.NoScene)
-          continue;
-        const std::string& method = r.Config.Method;
-        const int f = method == "SH" ? 9
-          : method == "PEEL" ? 8
-          : method == "SIR" ? 0
-          : method == "ISR" ? 4
-          : method == "SSP" ? 5
-          : r.Config.Paper ? 6 : r.Config.Nearest ? 7 : r.Config.Adaptive ? 3 : r.Config.Bounds ? 2 : 1;
-        if (f == family)
-          points.emplace_back(r.Ratio.Median, r.FullSS.Rmse);
-      }
-      if (points.empty())
-        continue;
-      std::sort(points.begin(), points.end());
-      table->SetNumberOfRows(static_cast<vtkIdType>(points.size()));
-      for (size_t i = 0; i < points.size(); ++i)
-      {
-        table->SetValue(static_cast<vtkIdType>(i), 0, points[i].first);
-        table->SetValue(static_cast<vtkIdType>(i), 1, points[i].second);
-      }
-      vtkPlot* plot = chart->AddPlot(points.size() > 1 ? vtkChart::LINE : vtkChart::POINTS);
-      plot->SetInputData(table, 0, 1);
-      plot->SetColor(colours[family][0], colours[family][1], colours[family][2], 255);
-      plot->SetWidth(2.0);
-      for (const auto& point : points)
-      {
-        largest[0] = std::max(largest[0], point.first);
-        largest[1] = std::max(largest[1], point.second);
-      }
-    }
-    // From zero with a margin, so that a point is never drawn on the frame (VTK's automatic
-    // range puts the extreme points on it).
-    for (int a = 0; a < 2; ++a)
-    {
-      vtkAxis* axis = chart->GetAxis(a == 0 ? vtkAxis::BOTTOM : vtkAxis::LEFT);
-      axis->SetBehavior(vtkAxis::FIXED);
-      axis->SetRange(0.0, largest[a] > 0.0 ? 1.1 * largest[a] : 1.0);
-    }
-  }
-  return WriteChartPng(window, view, path);
 }
 
 void ShowChartView(vtkRenderWindow* window, vtkContextView* view)

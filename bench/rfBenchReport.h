@@ -1,5 +1,5 @@
 // The report a person reads: results.md (the paper's Table 1 analogue, every row, the noise)
-// and pareto.png (error against frame time per mesh, drawn with VTK's charts).
+// and the chart helpers pareto.png and the scaling plots are drawn with (rfBenchPareto.h).
 #ifndef rfBenchReport_h
 #define rfBenchReport_h
 
@@ -25,9 +25,6 @@ void ShowChartView(vtkRenderWindow* window, vtkContextView* view);
 
 // Renders the chart view over white and writes the window to a PNG; false when it cannot.
 bool WriteChartPng(vtkRenderWindow* window, vtkContextView* view, const std::string& path);
-
-// Draws pareto.png in the window (its renderers are taken out).
-bool WritePareto(vtkRenderWindow* window, const std::string& path, const std::vector<Row>& rows);
 }
 
 #endif

@@ -114,10 +114,6 @@ void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
       defines << "#define RF_SIGNED_FRONT\n";
     }
   }
-  if (this->SampleComposite)
-  {
-    defines << "#define RF_SAMPLE_COMPOSITE\n";
-  }
   this->UseSHTransfer = shTransfer;
   this->SHTransfer->Retain(shTransfer ? glass : std::vector<vtkProp*>());
   if (shTransfer)
@@ -173,6 +169,16 @@ void vtkRefractionGeometryStage::DrawProps(vtkOpenGLRenderer* ren, int stage)
   int cullMode = GL_BACK;
   ostate->vtkglGetIntegerv(GL_CULL_FACE_MODE, &cullMode);
   this->PreRender(&state);
+  // With a separate composite program its code is in the mapper's program only while the
+  // composite is drawn (SetSeparateCompositeProgram): switching rebuilds the mapper's shader
+  // source, and VTK's shader cache hands back the program already compiled for it.
+  const bool compositeProgram =
+    this->SampleComposite && (!this->SeparateCompositeProgram || stage == STAGE_COMPOSITE);
+  if (compositeProgram != this->CompositeProgram)
+  {
+    this->CompositeProgram = compositeProgram;
+    this->DefinesTime.Modified();
+  }
   this->Stage = stage;
   this->State = ostate;
   this->Renderer = ren;
@@ -419,7 +425,8 @@ bool vtkRefractionGeometryStage::PostReplaceShaderValues(std::string&, std::stri
   // the G-buffer keeps emix too, so that the shading stage draws the edges over the glass.
   const bool haveColour = fragmentShader.find("vec3 diffuseColor") != std::string::npos &&
     fragmentShader.find("vec3 ambientColor") != std::string::npos;
-  defines << this->Defines << "#define RF_DATA_COLOUR "
+  defines << this->Defines << (this->CompositeProgram ? "#define RF_SAMPLE_COMPOSITE\n" : "")
+          << "#define RF_DATA_COLOUR "
           << (haveColour ? "vec4(ambientColor + diffuseColor, opacity)" : "vec4(1.0)")
           << "\n#define RF_EDGE_MIX "
           << (fragmentShader.find("float emix") != std::string::npos ? "emix" : "0.0")

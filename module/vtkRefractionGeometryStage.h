@@ -101,9 +101,12 @@ public:
   void SetSignedFront(bool signedFront) { this->SignedFront = signedFront; }
   /// Whether the frame draws STAGE_COMPOSITE (vtkRefractionSampleComposite): only then is the
   /// composite's code compiled into the mapper's program (llvmpipe runs both sides of a
-  /// branch, so it would cost every G-buffer draw its fetches). Takes effect at the next
-  /// Configure.
+  /// branch, so it would cost every G-buffer draw its fetches). Takes effect at the next draw.
   void SetSampleComposite(bool sampleComposite) { this->SampleComposite = sampleComposite; }
+  /// Whether the composite's code is compiled in only for the composite's draw (two programs
+  /// a frame, a shader-source rebuild at each switch) instead of into every draw of a frame
+  /// that draws it (vtkRefractionPass::SetCompositeProgram).
+  void SetSeparateCompositeProgram(bool separate) { this->SeparateCompositeProgram = separate; }
   /// The glass meshes' surface model (solid or thin sheet, per connected piece).
   vtkRefractionSurfaceModel* GetSurfaceModel() { return this->SurfaceModel; }
 
@@ -158,6 +161,8 @@ private:
   bool Peel = false;
   bool SignedFront = false;
   bool SampleComposite = false;
+  bool SeparateCompositeProgram = false;
+  bool CompositeProgram = false; ///< the mapper's program holds the composite (DrawProps)
   vtkTextureObject* PeelPrevious = nullptr; ///< the layer the one being drawn peels behind
   unsigned int PeelQuery = 0;               ///< DrawPeel's occlusion query (0: none yet)
   bool Parallel = false;

@@ -100,6 +100,11 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FilteredLookups: " << this->FilteredLookups << "\n";
   os << indent << "AntiAliasing: " << this->AntiAliasing << "\n";
   os << indent << "MultiSampleSilhouette: " << this->MultiSampleSilhouette << "\n";
+  os << indent << "CompositeProgram: "
+     << (this->CompositeProgram == COMPOSITE_PROGRAM_SEPARATE ? "separate"
+           : this->CompositeProgram == COMPOSITE_PROGRAM_SHARED ? "shared"
+                                                                : "auto")
+     << "\n";
   os << indent << "TIRBounces: " << this->TIRBounces << "\n";
   os << indent << "PeelLayers: " << this->PeelLayers << "\n";
   os << indent << "PeelLayersFound: " << this->PeelLayersFound << "\n";
@@ -403,6 +408,10 @@ void vtkRefractionPass::RenderGlass(
   this->GeometryStage->SetSheetPieceMaterials(this->Materials->GetSheetPieceMaterial());
   this->GeometryStage->SetSignedFront(exchange && peelLayers > 1);
   this->GeometryStage->SetSampleComposite(frame.SampleComposite);
+  this->GeometryStage->SetSeparateCompositeProgram(
+    this->CompositeProgram == COMPOSITE_PROGRAM_SEPARATE ||
+    (this->CompositeProgram == COMPOSITE_PROGRAM_AUTO && frame.SampleComposite &&
+      vtkRefractionSampleComposite::IsSoftwareRasterizer()));
   this->GeometryStage->Configure(glass, method->NeedsNormalDistance(), dataColour,
     this->BackSurface == BACK_SURFACE_NEAREST, peelLayers > 1, method->NeedsSHTransfer(),
     frame.InverseProjection, frame.Parallel);

@@ -411,6 +411,30 @@ public:
   vtkBooleanMacro(MultiSampleSilhouette, bool);
   ///@}
 
+  enum CompositeProgramModes
+  {
+    COMPOSITE_PROGRAM_AUTO = 0,
+    COMPOSITE_PROGRAM_SEPARATE = 1,
+    COMPOSITE_PROGRAM_SHARED = 2
+  };
+  ///@{
+  /**
+   * How the silhouette's draw at the window's samples (MultiSampleSilhouette) shares the
+   * glass mappers' program with the G-buffer draws of the same frame. SHARED: one program holds
+   * both, a uniform picks the stage. SEPARATE: the composite's code is in the program only
+   * for its own draw; VTK's mapper rebuilds its shader source at each of the two switches a
+   * frame (its shader cache keeps both compiled programs). Same pictures. AUTO (default):
+   * SEPARATE on software rasterizers (llvmpipe, softpipe, SWR), which run the code of both
+   * sides of a branch in every fragment, SHARED elsewhere. Measured on llvmpipe, 2 cores, a
+   * 4-sample window at 512x512 (docs/benchmark.md): SEPARATE took DIR's frame from 1.74 to
+   * 1.62 times plain VTK on the sphere, 2.00 to 1.85 on the torus; the switches cost about
+   * 2 ms of CPU per frame there, which a GPU that skips the branch not taken would pay for
+   * nothing (not measured on a GPU).
+   */
+  vtkSetClampMacro(CompositeProgram, int, COMPOSITE_PROGRAM_AUTO, COMPOSITE_PROGRAM_SHARED);
+  vtkGetMacro(CompositeProgram, int);
+  ///@}
+
   ///@{
   /**
    * Debug output: when on, every render also writes, per pixel of the glass, the exit point
@@ -536,6 +560,7 @@ protected:
   bool FilteredLookups = true;
   bool AntiAliasing = false;
   bool MultiSampleSilhouette = true;
+  int CompositeProgram = COMPOSITE_PROGRAM_AUTO;
   bool DebugOutput = false;
   bool AdaptiveSearch = false;
   bool SecantRefinement = true;

@@ -10,6 +10,8 @@
 
 #include "vtk_glew.h"
 
+#include <string>
+
 vtkStandardNewMacro(vtkRefractionSampleComposite);
 
 //------------------------------------------------------------------------------
@@ -18,6 +20,19 @@ int vtkRefractionSampleComposite::GetDrawFramebufferSamples()
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
   return samples;
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionSampleComposite::IsSoftwareRasterizer()
+{
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (!renderer)
+  {
+    return false;
+  }
+  const std::string name = renderer;
+  return name.find("llvmpipe") != std::string::npos ||
+    name.find("softpipe") != std::string::npos || name.find("SWR") != std::string::npos;
 }
 
 //------------------------------------------------------------------------------

@@ -31,6 +31,10 @@ public:
   /// Samples per pixel of the framebuffer bound for drawing now (0 or 1: single-sampled).
   static int GetDrawFramebufferSamples();
 
+  /// Whether the current context renders on the CPU (GL_RENDERER names llvmpipe, softpipe or
+  /// SWR): such rasterizers run both sides of every branch in every fragment.
+  static bool IsSoftwareRasterizer();
+
   /// The glass (GLASS_COLOR, shaded; at the pixels' corners when `corners`) into the
   /// framebuffer bound now, drawn by `geometry` with the glass props it was configured with.
   void Render(vtkOpenGLRenderer* ren, vtkRefractionGeometryStage* geometry,

@@ -9,6 +9,8 @@
 //               side lies behind its near side), opaque and glass
 //   inside      a tinted ball refracting an opaque box, a cone in front: drawn at the samples,
 //               the picture differs from the pixel-by-pixel composite only at the silhouette
+//   programs    the composite's code in a program of its own or shared with the G-buffer
+//               draws (SetCompositeProgram): the same picture, switched either way
 // Each case counts the silhouette pixels of intermediate grey (partial coverage) in both
 // pictures and requires the glass to have as many as the opaque actor (within 10%), and the
 // two pictures to agree pixel by pixel up to a few grey levels. In a single-sampled window
@@ -229,6 +231,79 @@ int Inside(const std::string& outDir)
   RF_REQUIRE(inside == 0, "%d pixels away from the silhouette changed", inside);
   return EXIT_SUCCESS;
 }
+
+// The composite's program (vtkRefractionPass::SetCompositeProgram): its code compiled only
+// into its own draw (SEPARATE, the mapper switching programs twice a frame) or into every draw
+// (SHARED) draws the same picture, frame after frame and switched either way: two glass balls
+// of different indices, one half in front of the other (the composite tells materials apart
+// at the silhouette), an opaque cone in front, with and without the corner samples.
+int Programs(const std::string& outDir)
+{
+  vtkSmartPointer<vtkActor> near = rftest::MakeSphere(0.8, 48);
+  near->SetPosition(0.5, 0.2, 0.8);
+  vtkRefractionPass::MakeGlass(near, 1.5);
+  vtkSmartPointer<vtkActor> far = rftest::MakeSphere(1.0, 48);
+  far->SetPosition(-0.5, -0.2, -0.5);
+  far->GetProperty()->SetColor(0.9, 0.8, 0.6);
+  vtkRefractionPass::MakeGlass(far, 1.9);
+  const double coneCentre[3] = { -0.9, 0.8, 1.6 };
+  auto cone = rftest::ActorFor(rftest::ConePoly(coneCentre, 0.8, 0.3, 24));
+  cone->GetProperty()->SetColor(0.2, 0.7, 0.3);
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.2, 0.25, 0.35);
+  renderer->AddActor(near);
+  renderer->AddActor(far);
+  renderer->AddActor(cone);
+  vtkNew<vtkRefractionPass> pass;
+  pass->SetEnvironmentModeToBuiltin();
+  renderer->SetPass(pass);
+  auto window = rftest::MakeWindow(renderer, kSize, kSize);
+  rftest::LookAtOrigin(renderer, 6.0, 10.0);
+  renderer->GetActiveCamera()->SetClippingRange(1.0, 20.0);
+  const int modes[] = { vtkRefractionPass::COMPOSITE_PROGRAM_SEPARATE,
+    vtkRefractionPass::COMPOSITE_PROGRAM_SHARED, vtkRefractionPass::COMPOSITE_PROGRAM_SHARED,
+    vtkRefractionPass::COMPOSITE_PROGRAM_SEPARATE, vtkRefractionPass::COMPOSITE_PROGRAM_SEPARATE,
+    vtkRefractionPass::COMPOSITE_PROGRAM_AUTO };
+  for (int antiAliasing = 0; antiAliasing < 2; ++antiAliasing)
+  {
+    pass->SetAntiAliasing(antiAliasing == 1);
+    vtkSmartPointer<vtkImageData> first;
+    for (int mode : modes)
+    {
+      pass->SetCompositeProgram(mode);
+      window->Render();
+      auto picture = rftest::Grab(window);
+      if (!first)
+      {
+        first = picture;
+        rftest::WritePNG(picture, outDir + "/silhouette_programs_" +
+            std::to_string(window->GetMultiSamples()) + "x" + (antiAliasing ? "_aa" : "") +
+            ".png");
+        continue;
+      }
+      int differ = 0;
+      for (int y = 0; y < kSize; ++y)
+      {
+        for (int x = 0; x < kSize; ++x)
+        {
+          bool same = true;
+          for (int c = 0; c < 3; ++c)
+          {
+            same = same &&
+              picture->GetScalarComponentAsDouble(x, y, 0, c) ==
+                first->GetScalarComponentAsDouble(x, y, 0, c);
+          }
+          differ += same ? 0 : 1;
+        }
+      }
+      std::printf("programs: multisamples %d, anti-aliasing %d, mode %d: %d pixels differ from "
+                  "the first frame (separate)\n",
+        window->GetMultiSamples(), antiAliasing, mode, differ);
+      RF_REQUIRE(differ == 0, "%d pixels differ with composite program mode %d", differ, mode);
+    }
+  }
+  return EXIT_SUCCESS;
+}
 }
 
 int main(int argc, char* argv[])
@@ -237,6 +312,10 @@ int main(int argc, char* argv[])
   if (name == "inside")
   {
     return Inside(argc > 2 ? argv[2] : ".");
+  }
+  if (name == "programs")
+  {
+    return Programs(argc > 2 ? argv[2] : ".");
   }
   if (name != "sphere" && name != "sphere_aa" && name != "torus")
   {

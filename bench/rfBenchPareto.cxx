@@ -3,7 +3,6 @@
 #include "rfBenchReport.h"
 
 #include <vtkAxis.h>
-#include <vtkChartLegend.h>
 #include <vtkChartMatrix.h>
 #include <vtkChartXY.h>
 #include <vtkContextScene.h>
@@ -19,7 +18,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
 
 namespace rfbench
 {

@@ -229,16 +229,20 @@ bool WritePareto(vtkRenderWindow* window, const std::string& path, const std::ve
         largest[1] = std::max(largest[1], points[i].second);
       }
       const bool front = family == familyCount - 1;
-      vtkPlot* plot = chart->AddPlot(front ? vtkChart::LINE : vtkChart::POINTS);
+      // A front of one row (it beats every other) is a mark, not a line: VTK draws no line
+      // through one point (and says so on the error output).
+      const bool frontLine = front && points.size() > 1;
+      vtkPlot* plot = chart->AddPlot(frontLine ? vtkChart::LINE : vtkChart::POINTS);
       plot->SetInputData(table, 0, 1);
       plot->SetColor(colours[family][0], colours[family][1], colours[family][2], 255);
       plot->SetWidth(front ? 1.5f : 2.0f);
       if (auto* markers = vtkPlotPoints::SafeDownCast(plot))
       {
-        markers->SetMarkerStyle(front ? vtkPlotPoints::NONE
-            : family == defaultFamily ? vtkPlotPoints::PLUS
-                                      : vtkPlotPoints::CIRCLE);
-        markers->SetMarkerSize(family == defaultFamily ? 14.0f : 7.0f);
+        markers->SetMarkerStyle(frontLine ? vtkPlotPoints::NONE
+            : front                       ? vtkPlotPoints::DIAMOND
+            : family == defaultFamily     ? vtkPlotPoints::PLUS
+                                          : vtkPlotPoints::CIRCLE);
+        markers->SetMarkerSize(family == defaultFamily || front ? 14.0f : 7.0f);
       }
     }
     // From zero with a margin, so that a point is never drawn on the frame (VTK's automatic

@@ -3,6 +3,7 @@
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLCamera.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
@@ -19,6 +20,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -150,4 +152,82 @@ void vtkRefractionDepthRange::ReleaseGraphicsResources(vtkWindow* w)
       quad->reset();
     }
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionDepthRange::ComputeScreenRectangle(vtkRenderer* ren,
+  const std::vector<vtkProp*>& props, int width, int height, int margin, int rectangle[4])
+{
+  rectangle[0] = 0;
+  rectangle[1] = 0;
+  rectangle[2] = width;
+  rectangle[3] = height;
+  vtkOpenGLCamera* camera = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
+  if (!camera || width < 1 || height < 1)
+  {
+    return;
+  }
+  vtkMatrix4x4* wcvc = nullptr;
+  vtkMatrix3x3* normalMatrix = nullptr;
+  vtkMatrix4x4* vcdc = nullptr;
+  vtkMatrix4x4* wcdc = nullptr;
+  camera->GetKeyMatrices(ren, wcvc, normalMatrix, vcdc, wcdc);
+  double lower[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
+  double upper[2] = { -VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  for (vtkProp* prop : props)
+  {
+    const double* b = prop->GetBounds();
+    if (!b)
+    {
+      return; // a prop that can draw anywhere
+    }
+    if (!(b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5]))
+    {
+      continue; // nothing to draw
+    }
+    for (int corner = 0; corner < 8; ++corner)
+    {
+      const double p[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)],
+        1.0 };
+      // VTK's key matrices are laid out for OpenGL (transposed): clip = p^T wcdc.
+      double clip[4];
+      for (int j = 0; j < 4; ++j)
+      {
+        clip[j] = p[0] * wcdc->GetElement(0, j) + p[1] * wcdc->GetElement(1, j) +
+          p[2] * wcdc->GetElement(2, j) + p[3] * wcdc->GetElement(3, j);
+      }
+      // A corner at or behind the eye plane projects without bound (or mirrored).
+      if (!(clip[3] > 1e-9 * (std::abs(clip[0]) + std::abs(clip[1]))) || !std::isfinite(clip[0]) ||
+        !std::isfinite(clip[1]) || !std::isfinite(clip[3]))
+      {
+        return;
+      }
+      for (int a = 0; a < 2; ++a)
+      {
+        const double ndc = clip[a] / clip[3];
+        lower[a] = std::min(lower[a], ndc);
+        upper[a] = std::max(upper[a], ndc);
+      }
+    }
+  }
+  if (!(lower[0] <= upper[0]) || !(lower[1] <= upper[1]))
+  {
+    return; // no prop with bounds: the whole viewport, as before anything was known
+  }
+  const int size[2] = { width, height };
+  int from[2];
+  int to[2];
+  for (int a = 0; a < 2; ++a)
+  {
+    // Normalized device coordinates to pixels, clamped before the conversion to int.
+    const double low = std::floor((0.5 * std::max(lower[a], -2.0) + 0.5) * size[a]) - margin;
+    const double high = std::ceil((0.5 * std::min(upper[a], 2.0) + 0.5) * size[a]) + margin;
+    from[a] = static_cast<int>(std::min(std::max(low, 0.0), static_cast<double>(size[a])));
+    to[a] = static_cast<int>(std::min(std::max(high, 0.0), static_cast<double>(size[a])));
+    to[a] = std::max(to[a], from[a]);
+  }
+  rectangle[0] = from[0];
+  rectangle[1] = from[1];
+  rectangle[2] = to[0] - from[0];
+  rectangle[3] = to[1] - from[1];
 }

@@ -6,6 +6,8 @@
  * vtkRefractionTargets::ReductionBlock texels a side (GLSL 1.50 has no compute shaders here)
  * into the targets' RG32F chain, down to 1x1 (R = min, G = max), or,
  * as the paper's section 5 suggests, the range of the glass props' bounding boxes on the CPU.
+ * The same boxes bound the glass on screen (ComputeScreenRectangle): the full-screen stages
+ * after the captures run only there.
  */
 #ifndef vtkRefractionDepthRange_h
 #define vtkRefractionDepthRange_h
@@ -36,6 +38,13 @@ public:
   /// The depth range (positive distances) of the props' bounding boxes, clipped to the near
   /// plane (parts of a box behind it are never captured: the search starts there).
   static void ComputeBounds(vtkRenderer* ren, const std::vector<vtkProp*>& props, double range[2]);
+
+  /// The pixels of a width x height viewport the props can cover: the rectangle (x, y, width,
+  /// height) around their bounding boxes' projections, grown by margin pixels on each side.
+  /// The whole viewport where that cannot be bounded: a box reaching behind the eye plane, a
+  /// prop without finite bounds, no camera. The same camera matrices VTK's mappers draw with.
+  static void ComputeScreenRectangle(vtkRenderer* ren, const std::vector<vtkProp*>& props,
+    int width, int height, int margin, int rectangle[4]);
 
   void ReleaseGraphicsResources(vtkWindow* w);
 

@@ -376,6 +376,17 @@ void vtkRefractionPass::RenderGlass(
     this->EnvironmentMode == ENVIRONMENT_RENDERER, sceneRefraction,
     this->MultiSampleSilhouette && !exchange,
     this->Materials, this->Lights, this->BoundsDepthRange);
+  // Where the glass can be on screen: the shading and the composite run there only. Across
+  // ranks rank 0 shades every rank's glass, which its own props do not bound.
+  frame.GlassRectangle[2] = this->Width;
+  frame.GlassRectangle[3] = this->Height;
+  if (!exchange)
+  {
+    // Two pixels of margin: anti-aliasing shades a pixel's corners, which reach one pixel
+    // past it, and its composite averages the corner one pixel further on.
+    vtkRefractionDepthRange::ComputeScreenRectangle(
+      ren, glass, this->Width, this->Height, 2, frame.GlassRectangle);
+  }
   // A compositor that draws each rank over black (IceT) has the real background given here.
   const bool compositingBackground = exchange && this->UseCompositingBackground;
   if (compositingBackground)

@@ -23,6 +23,7 @@
 #include "rfShaders.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
 #include <sstream>
 
 vtkStandardNewMacro(vtkRefractionShadeStage);
@@ -340,10 +341,14 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
     vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
     vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
     vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
     const int width = static_cast<int>(glassColour->GetWidth());
     const int height = static_cast<int>(glassColour->GetHeight());
     ostate->vtkglViewport(0, 0, width, height);
-    ostate->vtkglScissor(0, 0, width, height);
+    // Only where the glass can be: llvmpipe visits every 4x4 block a quad covers, glass or not.
+    const int* r = frame.GlassRectangle;
+    ostate->vtkglScissor(r[0], r[1], r[2], r[3]);
+    ostate->vtkglEnable(GL_SCISSOR_TEST);
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglEnable(GL_DEPTH_TEST);
     if (corners)
@@ -360,7 +365,7 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
   fbo->RestorePreviousBindingsAndBuffers();
   if (!frame.SampleComposite)
   {
-    this->Composite(ren, targets, corners);
+    this->Composite(ren, targets, corners, frame.GlassRectangle);
   }
 }
 
@@ -405,8 +410,8 @@ void vtkRefractionShadeStage::DrawCornerDepth(
 }
 
 //------------------------------------------------------------------------------
-void vtkRefractionShadeStage::Composite(
-  vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, bool corners)
+void vtkRefractionShadeStage::Composite(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets,
+  bool corners, const int rectangle[4])
 {
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   vtkOpenGLState* ostate = renWin->GetState();
@@ -453,6 +458,28 @@ void vtkRefractionShadeStage::Composite(
   vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
   vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(ostate);
   vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+  // The glass's rectangle in the renderer's viewport, inside the scissor box VTK set (if on).
+  int viewport[4];
+  ostate->vtkglGetIntegerv(GL_VIEWPORT, viewport);
+  int box[4] = { viewport[0] + rectangle[0], viewport[1] + rectangle[1], rectangle[2],
+    rectangle[3] };
+  if (ostate->GetEnumState(GL_SCISSOR_TEST))
+  {
+    int scissor[4];
+    ostate->vtkglGetIntegerv(GL_SCISSOR_BOX, scissor);
+    const int x0 = std::max(box[0], scissor[0]);
+    const int y0 = std::max(box[1], scissor[1]);
+    const int x1 = std::min(box[0] + box[2], scissor[0] + scissor[2]);
+    const int y1 = std::min(box[1] + box[3], scissor[1] + scissor[3]);
+    box[0] = x0;
+    box[1] = y0;
+    box[2] = std::max(x1 - x0, 0);
+    box[3] = std::max(y1 - y0, 0);
+  }
+  ostate->vtkglScissor(box[0], box[1], box[2], box[3]);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
   ostate->vtkglEnable(GL_DEPTH_TEST);
   ostate->vtkglDepthFunc(GL_LEQUAL);
   ostate->vtkglDepthMask(GL_TRUE);

@@ -66,6 +66,9 @@ public:
     const double* BoundsDepthRange = nullptr;
     const std::vector<float>* Highlights = nullptr; // 4 per material (nullptr: none)
     const vtkRefractionLights* Lights = nullptr;     // the renderer's, in view space
+    // The pixels the glass can cover (x, y, width, height in the targets): the shading and the
+    // full-screen composite run only there (vtkRefractionDepthRange::ComputeScreenRectangle).
+    int GlassRectangle[4] = { 0, 0, 0, 0 };
   };
 
   /// The shading program for the method and the pass's settings; false when it does not build.
@@ -100,7 +103,8 @@ private:
 
   // The glass colour target into the framebuffer bound now, with the glass's depth; with
   // anti-aliasing (corners) each pixel averages its four corners over the scene.
-  void Composite(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, bool corners);
+  void Composite(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, bool corners,
+    const int rectangle[4]);
   // Anti-aliasing: into the depth buffer attached now, the nearest front depth of the four
   // pixels that meet at each corner (shaders/rfCornerDepthFS.glsl).
   void DrawCornerDepth(vtkOpenGLRenderer* ren, vtkTextureObject* frontDepth);

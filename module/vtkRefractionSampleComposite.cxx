@@ -60,9 +60,22 @@ void vtkRefractionSampleComposite::Render(vtkOpenGLRenderer* ren,
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   ostate->vtkglDisable(GL_BLEND);
   surface->Activate();
+  // The silhouette's fragments whose pixel centre is off the glass take the glass colour
+  // around their pixel from mipmap levels 1 and 2 (rfGeometryFS.glsl, rfSampleComposite),
+  // filtered; the shading stage cleared the texels without glass to 0. Only for this draw:
+  // every other reader fetches level 0 texels, and a mipmapped filter with levels left from
+  // another size would make the texture incomplete (every fetch black).
+  colour->SetMinificationFilter(vtkTextureObject::LinearMipmapNearest);
+  colour->SetMagnificationFilter(vtkTextureObject::Linear);
+  colour->SetMaxLevel(2);
   colour->Activate();
+  glGenerateMipmap(GL_TEXTURE_2D);
   geometry->SetCompositeInputs(surface->GetTextureUnit(), colour->GetTextureUnit(), corners);
   geometry->DrawOnScreen(ren, vtkRefractionGeometryStage::STAGE_COMPOSITE);
+  colour->SetMinificationFilter(vtkTextureObject::Nearest);
+  colour->SetMagnificationFilter(vtkTextureObject::Nearest);
+  colour->SetMaxLevel(1000);
+  colour->Activate(); // sends the changed parameters to the texture again
   colour->Deactivate();
   surface->Deactivate();
 }

@@ -9,7 +9,9 @@
  * surface is drawn again through VTK's mappers (vtkRefractionGeometryStage, STAGE_COMPOSITE)
  * into the framebuffer bound now, with the depth test of an opaque actor: the rasterizer
  * covers exactly the samples it covers for an opaque actor of the same mesh, each fragment
- * takes the colour the shading stage gave its pixel (at the silhouette, its neighbours'), and
+ * takes the colour the shading stage gave its pixel (at the silhouette, where its pixel's centre
+ * is off the glass, the glass colour around the pixel from two mipmap levels of the shading's
+ * output, which Render makes for the draw), and
  * the window's resolve blends the silhouette as it blends VTK's own edges. In a
  * single-sampled framebuffer the full-screen composite is used (the same picture, cheaper).
  */

@@ -351,6 +351,18 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
     ostate->vtkglEnable(GL_SCISSOR_TEST);
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    if (frame.SampleComposite)
+    {
+      // The composite at the window's samples fills the silhouette from the glass colour's
+      // mipmaps (vtkRefractionSampleComposite): texels without glass must hold 0, not what an
+      // earlier frame left there. The whole target: a mipmap block reaches past the rectangle.
+      vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+      ostate->vtkglDisable(GL_SCISSOR_TEST);
+      ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+      ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+      ostate->vtkglEnable(GL_SCISSOR_TEST);
+    }
     if (corners)
     {
       this->DrawCornerDepth(ren, frontDepth);

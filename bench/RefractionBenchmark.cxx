@@ -280,6 +280,7 @@ int main(int argc, char* argv[])
       SetGlass(scene, true);
       window->Render();
       Truth truth;
+      truth.SolidBackground = !renderer->GetGradientBackground();
       const std::string where = scene.Name + " " + std::to_string(size) + " ";
       const std::string ssLabel = " " + std::to_string(ss) + "x" + std::to_string(ss);
       if (!Trace(renderer, pass, size, vtkRefractionReference::TWO_INTERFACE, 1, where + "two",

@@ -110,6 +110,7 @@ std::vector<Column> Columns(int stageCount)
     number("psnr_" + suffix + "_tir", [member](Row& r) -> double& { return (r.*member).PsnrTir; });
     number("psnr_" + suffix + "_rest", [member](Row& r) -> double& { return (r.*member).PsnrRest; });
     number("psnr_" + suffix + "_rim", [member](Row& r) -> double& { return (r.*member).PsnrRim; });
+    number("psnr_" + suffix + "_edge", [member](Row& r) -> double& { return (r.*member).PsnrEdge; });
   }
   number("psnr_model_full_ss", [](Row& r) -> double& { return r.PsnrModelFullSS; });
   number("brightness_full_ss", [](Row& r) -> double& { return r.BrightnessFullSS; });

@@ -104,7 +104,7 @@ namespace
 // The pixel subsets a picture is measured on.
 struct Masks
 {
-  std::vector<unsigned char> Glass, Tir, Rest, Rim;
+  std::vector<unsigned char> Glass, Tir, Rest, Rim, Edge;
 };
 
 Errors Compare(const std::vector<float>& colour, const Reference& reference, const Masks& m,
@@ -120,6 +120,10 @@ Errors Compare(const std::vector<float>& colour, const Reference& reference, con
   rf_psnr(colour.data(), reference.Colour.data(), n, 3, m.Tir.data(), &e.PsnrTir);
   rf_psnr(colour.data(), reference.Colour.data(), n, 3, m.Rest.data(), &e.PsnrRest);
   rf_psnr(colour.data(), reference.Colour.data(), n, 3, m.Rim.data(), &e.PsnrRim);
+  if (!m.Edge.empty())
+  {
+    rf_psnr(colour.data(), reference.Colour.data(), n, 3, m.Edge.data(), &e.PsnrEdge);
+  }
   return e;
 }
 
@@ -142,7 +146,8 @@ double MaskedMean(const std::vector<float>& colour, const std::vector<unsigned c
 
 // Errors on the pixels where both the pass and the reference (its pixel centre) see glass;
 // TIR pixels are those where the two-interface reference's ray is totally reflected at the
-// exit, rim pixels those the supersampled full reference's sub-samples cover in part.
+// exit, rim pixels those the supersampled full reference's sub-samples cover in part. Edge
+// pixels: every pixel those sub-samples cover in part, glass at either centre or not.
 void Measure(Row& row, const std::vector<float>& colour, const std::vector<float>& pointColour,
   vtkImageData* debug, const Truth& truth, int size)
 {
@@ -158,6 +163,14 @@ void Measure(Row& row, const std::vector<float>& colour, const std::vector<float
   m.Tir.assign(n, 0);
   m.Rest.assign(n, 0);
   m.Rim.assign(n, 0);
+  if (truth.SolidBackground)
+  {
+    m.Edge.assign(n, 0);
+    for (size_t i = 0; i < n && i < coverage.size(); ++i)
+    {
+      m.Edge[i] = coverage[i] > 0.0f && coverage[i] < 1.0f ? 1 : 0;
+    }
+  }
   std::vector<unsigned char> tir(n, 0);
   long count = 0, tirCount = 0;
   for (size_t i = 0; i < n; ++i)

@@ -28,6 +28,10 @@ struct Truth
 {
   Reference Two, Full, TwoSS, FullSS;
   Reference FullDoubleSS; // traced with --convergence only: twice FullSS's samples per side
+  // The renderer's background is one colour: the supersampled references' sub-samples that
+  // miss the glass take it (rf_trace_options.background), so a picture's whole silhouette can
+  // be held against them (Errors::PsnrEdge).
+  bool SolidBackground = true;
 };
 
 // Traces the renderer's scene as the pass sees it (mode: vtkRefractionReference's, samples

@@ -52,8 +52,10 @@ bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
        "(vtkRefractionPass::SetAntiAliasing); `TIR 2`: two total internal reflections followed "
        "(SetTIRBounces). `TIR` / `rest`: PSNR "
        "against `full SS` on the pixels where the two-interface reference's ray is totally "
-       "reflected at the exit, and on the others (`-`: none); `rim`: on the silhouette's pixels "
-       "(those `full SS` covers only in part); `brightness`: the mean colour over `full SS`'s "
+       "reflected at the exit, and on the others (`-`: none); `rim`: on the silhouette's glass "
+       "pixels (those `full SS` covers only in part, of the glass pixels above); `edge`: on every "
+       "pixel `full SS` covers only in part, whatever either centre sees (the whole silhouette, "
+       "its background side included; `-` over a gradient background); `brightness`: the mean colour over `full SS`'s "
        "on the glass pixels (1: as bright as the truth). Stage times are the pass's GL "
        "timer queries, over frames of their own after the timed frames (the timed frames run "
        "without them: their queries make llvmpipe finish each stage before the next), stage k = vtkRefractionPass's TIMED_* enumerator k (";
@@ -126,7 +128,8 @@ bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
   f << "\n" << ParetoSummary(rows);
   f << "## All rows\n\n| mesh | size | method | ms [min-max] | ratio [min-max] | stage ms | "
        "pre ms | B/px | PSNR two | PSNR full | PSNR full SS | model vs full SS | SSIM full SS | TIR / "
-       "rest (full SS) | rim (full SS) | brightness | TIR / rest (two) | T2 deg mean/p95 | TIR px |\n"
+       "rest (full SS) | rim / edge (full SS) | brightness | TIR / rest (two) | T2 deg mean/p95 | TIR "
+       "px |\n"
     << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& r : rows)
   {
@@ -139,13 +142,13 @@ bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
     }
     std::snprintf(line, sizeof(line),
       "| %s | %d | %s | %.2f [%.2f-%.2f] | %.2f [%.2f-%.2f] | %s | %.1f | %.0f | %s | %s | %s | "
-      "%s | %.3f | %s / %s | %s | %.3f | %s / %s | %.2f/%.2f | %ld |\n",
+      "%s | %.3f | %s / %s | %s / %s | %.3f | %s / %s | %.2f/%.2f | %ld |\n",
       r.Mesh.c_str(), r.Size, r.Config.Label().c_str(), r.CpuMs.Median, r.CpuMs.Min,
       r.CpuMs.Max, r.Ratio.Median, r.Ratio.Min, r.Ratio.Max, stages.c_str(), r.PrecomputeMs,
       r.BytesPerPixel, Db(r.Two.Psnr).c_str(), Db(r.Full.Psnr).c_str(),
       Db(r.FullSS.Psnr).c_str(), Db(r.PsnrModelFullSS).c_str(), r.FullSS.Ssim,
       Db(r.FullSS.PsnrTir).c_str(), Db(r.FullSS.PsnrRest).c_str(), Db(r.FullSS.PsnrRim).c_str(),
-      r.BrightnessFullSS, Db(r.Two.PsnrTir).c_str(), Db(r.Two.PsnrRest).c_str(), r.AngMean,
+      Db(r.FullSS.PsnrEdge).c_str(), r.BrightnessFullSS, Db(r.Two.PsnrTir).c_str(), Db(r.Two.PsnrRest).c_str(), r.AngMean,
       r.AngP95, r.TirPixels);
     f << line;
   }

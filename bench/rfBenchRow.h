@@ -13,11 +13,16 @@
 
 namespace rfbench
 {
-// Error of one picture against one reference, on glass pixels, split by TIR; and on the
-// silhouette's pixels (Rim: those the supersampled full reference covers only in part).
+// Error of one picture against one reference, on glass pixels, split by TIR; on the
+// silhouette's glass pixels (Rim: those the supersampled full reference covers only in part);
+// and on the whole silhouette (Edge: every pixel that reference covers in part, whatever the
+// picture's or the reference's pixel centre sees, so that what a picture does to the
+// background side of its rim counts too; -1 over a gradient background, which the truth's
+// sub-samples that miss the glass do not follow).
 struct Errors
 {
-  double Psnr = -1, Rmse = -1, Ssim = -1, PsnrTir = -1, PsnrRest = -1, PsnrRim = -1;
+  double Psnr = -1, Rmse = -1, Ssim = -1, PsnrTir = -1, PsnrRest = -1, PsnrRim = -1,
+         PsnrEdge = -1;
 };
 
 // Medians and extremes over the repeats of one row.

@@ -62,9 +62,10 @@ int main(int argc, char* argv[])
   const int repeats = column("repeats"), ratio = column("cpu_ratio"),
             ratioMin = column("cpu_ratio_min"), ratioMax = column("cpu_ratio_max"),
             psnrFullSS = column("psnr_full_ss"), psnrFull = column("psnr_full"),
-            psnrRim = column("psnr_full_ss_rim"), brightness = column("brightness_full_ss");
+            psnrRim = column("psnr_full_ss_rim"), brightness = column("brightness_full_ss"),
+            psnrEdge = column("psnr_full_ss_edge");
   if (repeats < 0 || ratio < 0 || ratioMin < 0 || ratioMax < 0 || psnrFullSS < 0 || psnrFull < 0 ||
-    psnrRim < 0 || brightness < 0)
+    psnrRim < 0 || brightness < 0 || psnrEdge < 0)
   {
     std::fprintf(stderr, "missing repeat, spread or supersampled-reference columns\n");
     return 1;
@@ -133,7 +134,18 @@ int main(int argc, char* argv[])
       }
       const double rim = std::atof(f[psnrRim].c_str());
       const double bright = std::atof(f[brightness].c_str());
-      std::printf("  on the rim %.2f dB; brightness %.4f of the truth's\n", rim, bright);
+      const double edge = std::atof(f[psnrEdge].c_str());
+      std::printf("  on the rim %.2f dB, the whole silhouette %.2f dB; brightness %.4f of the "
+                  "truth's\n",
+        rim, edge, bright);
+      // The whole silhouette holds the rim's glass pixels and the background side, where a
+      // single-sampled picture shows the background against a truth part glass: a figure, and
+      // not the rim's (a mask that found only the rim's pixels would read the same).
+      if (!(edge > 0.0 && edge != rim))
+      {
+        std::fprintf(stderr, "no figure for the whole silhouette, or the same as the rim's\n");
+        ++failures;
+      }
       if (!(rim > 0.0 && rim < fullSS))
       {
         std::fprintf(stderr, "the rim's error is not above the whole glass's: no rim pixels, or "

@@ -68,7 +68,8 @@ vtkSmartPointer<vtkTextureObject> MakeColorTexture(vtkOpenGLRenderWindow* renWin
   return texture;
 }
 
-// What the driver allocated for level 0 of a 2D texture, from its reported channel sizes.
+// What the driver allocated for a 2D texture, from its reported channel sizes: level 0 and
+// every mipmap level it has (the levels stop at the first of width 0).
 unsigned long long MeasureBytes(vtkTextureObject* texture)
 {
   texture->Activate();
@@ -80,12 +81,21 @@ unsigned long long MeasureBytes(vtkTextureObject* texture)
     glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, channel, &size);
     bits += size;
   }
-  GLint width = 0;
-  GLint height = 0;
-  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &width);
-  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &height);
+  unsigned long long bytes = 0;
+  for (GLint level = 0; level < 15; ++level)
+  {
+    GLint width = 0;
+    GLint height = 0;
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_WIDTH, &width);
+    glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_HEIGHT, &height);
+    if (width <= 0 || height <= 0)
+    {
+      break;
+    }
+    bytes += static_cast<unsigned long long>(width) * height * ((bits + 7) / 8);
+  }
   texture->Deactivate();
-  return static_cast<unsigned long long>(width) * height * ((bits + 7) / 8);
+  return bytes;
 }
 }
 
@@ -140,6 +150,15 @@ void vtkRefractionTargets::Allocate(vtkOpenGLRenderWindow* renWin, int target)
       renWin, this->Width, this->Height, f.Components, f.InternalFormat, f.Format, f.Filter);
   }
   this->TargetBytes[target] = MeasureBytes(this->Targets[target]);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionTargets::MeasureAgain(int target)
+{
+  if (target >= 0 && target < TARGET_COUNT && this->Targets[target])
+  {
+    this->TargetBytes[target] = MeasureBytes(this->Targets[target]);
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -95,6 +95,10 @@ public:
   /// Bytes of all allocated targets, as the driver reports their formats.
   unsigned long long GetBytes() const;
 
+  /// Measures a target's bytes again, every mipmap level it has now (the glass colour gets
+  /// two for the composite at the window's samples, vtkRefractionSampleComposite).
+  void MeasureAgain(int target);
+
   void ReleaseGraphicsResources(vtkWindow* w);
 
 protected:

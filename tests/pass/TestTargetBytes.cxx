@@ -10,7 +10,9 @@
 // each side (blocks of 4 x 4 texels, rounded up); PEEL's K - 1 peeled layers RGBA32F
 // and their DEPTH32F = 16 (K - 1) + 4, and the layers' depths packed into RGBA32F, one for
 // K <= 4, two above; anti-aliasing's corner depth buffer DEPTH32F = 4; the debug output
-// 2 x RGBA32F.
+// 2 x RGBA32F. In a multisampled window (VTK's default) the glass colour also has its mipmap
+// levels 1 and 2 (each side halved, rounded down), which the composite at the window's samples
+// reads at the silhouette; a single-sampled window has none.
 #include "vtkRefractionPass.h"
 
 #include "rfTestWindow.h"
@@ -77,8 +79,11 @@ int main()
     int Layers; // PEEL's K (0: the default, 4)
     bool AntiAliasing;
   };
-  const unsigned long long front = 32 * pixels;
-  const unsigned long long frontUntinted = 28 * pixels;
+  const unsigned long long glassMipmaps = window->GetMultiSamples() > 0
+    ? 8ULL * ((width / 2) * (height / 2) + (width / 4) * (height / 4))
+    : 0;
+  const unsigned long long front = 32 * pixels + glassMipmaps;
+  const unsigned long long frontUntinted = 28 * pixels + glassMipmaps;
   const unsigned long long back = 20 * pixels;
   const unsigned long long reduction = 8 * ReductionTexels(width, height);
   const Case cases[] = {

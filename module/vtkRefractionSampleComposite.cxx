@@ -78,5 +78,5 @@ void vtkRefractionSampleComposite::Render(vtkOpenGLRenderer* ren,
   colour->Activate(); // sends the changed parameters to the texture again
   colour->Deactivate();
   surface->Deactivate();
-  targets->MeasureAgain(vtkRefractionTargets::GLASS_COLOR); // with its two mipmap levels
+  targets->CountMipmaps(vtkRefractionTargets::GLASS_COLOR);
 }

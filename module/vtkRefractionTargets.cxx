@@ -150,14 +150,17 @@ void vtkRefractionTargets::Allocate(vtkOpenGLRenderWindow* renWin, int target)
       renWin, this->Width, this->Height, f.Components, f.InternalFormat, f.Format, f.Filter);
   }
   this->TargetBytes[target] = MeasureBytes(this->Targets[target]);
+  this->MipmapsCounted[target] = false;
 }
 
 //------------------------------------------------------------------------------
-void vtkRefractionTargets::MeasureAgain(int target)
+void vtkRefractionTargets::CountMipmaps(int target)
 {
-  if (target >= 0 && target < TARGET_COUNT && this->Targets[target])
+  if (target >= 0 && target < TARGET_COUNT && this->Targets[target] &&
+    !this->MipmapsCounted[target])
   {
     this->TargetBytes[target] = MeasureBytes(this->Targets[target]);
+    this->MipmapsCounted[target] = true;
   }
 }
 

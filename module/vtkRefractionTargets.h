@@ -95,9 +95,10 @@ public:
   /// Bytes of all allocated targets, as the driver reports their formats.
   unsigned long long GetBytes() const;
 
-  /// Measures a target's bytes again, every mipmap level it has now (the glass colour gets
-  /// two for the composite at the window's samples, vtkRefractionSampleComposite).
-  void MeasureAgain(int target);
+  /// Counts the mipmap levels a target has been given since it was allocated (the glass
+  /// colour gets two for the composite at the window's samples, vtkRefractionSampleComposite):
+  /// measures it again the first time after each allocation, so not every frame.
+  void CountMipmaps(int target);
 
   void ReleaseGraphicsResources(vtkWindow* w);
 
@@ -112,6 +113,7 @@ private:
   void Allocate(vtkOpenGLRenderWindow* renWin, int target);
   vtkSmartPointer<vtkTextureObject> Targets[TARGET_COUNT];
   unsigned long long TargetBytes[TARGET_COUNT] = {};
+  bool MipmapsCounted[TARGET_COUNT] = {};
   std::vector<vtkSmartPointer<vtkTextureObject>> ReductionLevels;
   unsigned long long ReductionBytes = 0;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;

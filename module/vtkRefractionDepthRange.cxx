@@ -1,5 +1,6 @@
 #include "vtkRefractionDepthRange.h"
 
+#include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
@@ -125,10 +126,11 @@ void vtkRefractionDepthRange::ComputeBounds(
     {
       continue;
     }
+    const vtkBoundingBox box(b);
     for (int corner = 0; corner < 8; ++corner)
     {
-      const double p[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)],
-        1.0 };
+      double p[4] = { 0.0, 0.0, 0.0, 1.0 };
+      box.GetCorner(corner, p);
       double q[4];
       view->MultiplyPoint(p, q);
       nearest = std::min(nearest, -q[2]);
@@ -185,10 +187,11 @@ void vtkRefractionDepthRange::ComputeScreenRectangle(vtkRenderer* ren,
     {
       continue; // nothing to draw
     }
+    const vtkBoundingBox box(b);
     for (int corner = 0; corner < 8; ++corner)
     {
-      const double p[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)],
-        1.0 };
+      double p[4] = { 0.0, 0.0, 0.0, 1.0 };
+      box.GetCorner(corner, p);
       // VTK's key matrices are laid out for OpenGL (transposed): clip = p^T wcdc.
       double clip[4];
       for (int j = 0; j < 4; ++j)

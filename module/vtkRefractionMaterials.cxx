@@ -86,10 +86,12 @@ double Diagonal(const double* b)
 double PlacedDiagonal(vtkProp* prop, const double b[6])
 {
   vtkActor* actor = vtkActor::SafeDownCast(prop);
+  const vtkBoundingBox model(b);
   vtkBoundingBox box;
   for (int corner = 0; corner < 8; ++corner)
   {
-    double p[4] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)], 1.0 };
+    double p[4] = { 0.0, 0.0, 0.0, 1.0 };
+    model.GetCorner(corner, p);
     if (actor)
     {
       actor->GetMatrix()->MultiplyPoint(p, p);

@@ -65,6 +65,9 @@ void vtkRefractionSampleComposite::Render(vtkOpenGLRenderer* ren,
   // filtered; the shading stage cleared the texels without glass to 0. Only for this draw:
   // every other reader fetches level 0 texels, and a mipmapped filter with levels left from
   // another size would make the texture incomplete (every fetch black).
+  const int minification = colour->GetMinificationFilter();
+  const int magnification = colour->GetMagnificationFilter();
+  const int maxLevel = colour->GetMaxLevel();
   colour->SetMinificationFilter(vtkTextureObject::LinearMipmapNearest);
   colour->SetMagnificationFilter(vtkTextureObject::Linear);
   colour->SetMaxLevel(2);
@@ -72,9 +75,9 @@ void vtkRefractionSampleComposite::Render(vtkOpenGLRenderer* ren,
   glGenerateMipmap(GL_TEXTURE_2D);
   geometry->SetCompositeInputs(surface->GetTextureUnit(), colour->GetTextureUnit(), corners);
   geometry->DrawOnScreen(ren, vtkRefractionGeometryStage::STAGE_COMPOSITE);
-  colour->SetMinificationFilter(vtkTextureObject::Nearest);
-  colour->SetMagnificationFilter(vtkTextureObject::Nearest);
-  colour->SetMaxLevel(1000);
+  colour->SetMinificationFilter(minification);
+  colour->SetMagnificationFilter(magnification);
+  colour->SetMaxLevel(maxLevel);
   colour->Activate(); // sends the changed parameters to the texture again
   colour->Deactivate();
   surface->Deactivate();

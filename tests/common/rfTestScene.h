@@ -288,6 +288,21 @@ inline int MaxChannelDifference(vtkImageData* a, vtkImageData* b)
   return worst;
 }
 
+// Whether any channel of pixel (x, y) differs by more than `tolerance` (0..255).
+inline bool PixelDiffers(vtkImageData* a, vtkImageData* b, int x, int y, double tolerance)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    const double d =
+      a->GetScalarComponentAsDouble(x, y, 0, c) - b->GetScalarComponentAsDouble(x, y, 0, c);
+    if (d > tolerance || d < -tolerance)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 // Pixels where any channel differs by more than `tolerance` (0..255).
 inline int DifferingPixels(vtkImageData* a, vtkImageData* b, int tolerance)
 {
@@ -297,14 +312,7 @@ inline int DifferingPixels(vtkImageData* a, vtkImageData* b, int tolerance)
   {
     for (int x = 0; x < dims[0]; ++x)
     {
-      bool differs = false;
-      for (int c = 0; c < 3; ++c)
-      {
-        const double d = a->GetScalarComponentAsDouble(x, y, 0, c) -
-          b->GetScalarComponentAsDouble(x, y, 0, c);
-        differs = differs || d > tolerance || d < -tolerance;
-      }
-      count += differs ? 1 : 0;
+      count += PixelDiffers(a, b, x, y, tolerance) ? 1 : 0;
     }
   }
   return count;

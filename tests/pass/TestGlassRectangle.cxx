@@ -28,20 +28,6 @@ struct Case
   double Eye[3];
 };
 
-bool Differs(vtkImageData* a, vtkImageData* b, int x, int y, double tolerance)
-{
-  for (int c = 0; c < 3; ++c)
-  {
-    const double d =
-      a->GetScalarComponentAsDouble(x, y, 0, c) - b->GetScalarComponentAsDouble(x, y, 0, c);
-    if (d > tolerance || d < -tolerance)
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
 bool Inside(const int rectangle[4], int x, int y)
 {
   return x >= rectangle[0] && x < rectangle[0] + rectangle[2] && y >= rectangle[1] &&
@@ -65,14 +51,15 @@ Count Compare(vtkImageData* glass, vtkImageData* opaque, vtkImageData* backgroun
   const int rectangle[4])
 {
   auto footprint = [&](int x, int y) {
-    return x < 0 || y < 0 || x >= Size || y >= Size || Differs(opaque, background, x, y, 8.0);
+    return x < 0 || y < 0 || x >= Size || y >= Size ||
+      rftest::PixelDiffers(opaque, background, x, y, 8.0);
   };
   Count count;
   for (int y = 0; y < Size; ++y)
   {
     for (int x = 0; x < Size; ++x)
     {
-      const bool isGlass = Differs(glass, background, x, y, 0.0);
+      const bool isGlass = rftest::PixelDiffers(glass, background, x, y, 0.0);
       count.Glass += isGlass ? 1 : 0;
       count.GlassOutside += isGlass && !Inside(rectangle, x, y) ? 1 : 0;
       if (!footprint(x, y))

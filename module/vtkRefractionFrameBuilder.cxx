@@ -10,6 +10,9 @@
 #include "vtkRefractionLights.h"
 #include "vtkRefractionMaterials.h"
 #include "vtkRefractionSampleComposite.h"
+#include "vtk_glew.h"
+
+#include <limits>
 
 vtkStandardNewMacro(vtkRefractionFrameBuilder);
 
@@ -53,6 +56,9 @@ vtkRefractionShadeStage::Frame vtkRefractionFrameBuilder::Build(vtkOpenGLRendere
   // its samples.
   frame.SampleComposite =
     multiSampleSilhouette && vtkRefractionSampleComposite::GetDrawFramebufferSamples() > 1;
+  frame.SampleCeiling = vtkRefractionFrameBuilder::DrawFramebufferHoldsRadiance()
+    ? std::numeric_limits<float>::max()
+    : 1.f;
   frame.AbsorptionDistance = materials->GetAbsorptionDistance();
   frame.GlassDiagonal = materials->GetLargestDiagonal();
   frame.GlassExtent = materials->GetExtentDiagonal();
@@ -69,6 +75,27 @@ vtkRefractionShadeStage::Frame vtkRefractionFrameBuilder::Build(vtkOpenGLRendere
     frame.Lights = lights;
   }
   return frame;
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionFrameBuilder::DrawFramebufferHoldsRadiance()
+{
+  GLint bound = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+  if (bound == 0)
+  {
+    return false; // a window's own buffers are fixed point
+  }
+  GLint drawBuffer = GL_NONE;
+  glGetIntegerv(GL_DRAW_BUFFER0, &drawBuffer);
+  if (drawBuffer == GL_NONE)
+  {
+    return false;
+  }
+  GLint type = GL_NONE;
+  glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, static_cast<GLenum>(drawBuffer),
+    GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);
+  return type == GL_FLOAT;
 }
 
 //------------------------------------------------------------------------------

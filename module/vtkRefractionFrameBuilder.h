@@ -48,6 +48,9 @@ private:
   void operator=(const vtkRefractionFrameBuilder&) = delete;
 
   void UpdateCamera(vtkOpenGLRenderer* ren);
+  // Whether the framebuffer bound for drawing stores floats (radiance, for a tone mapping pass
+  // that follows) rather than display values.
+  static bool DrawFramebufferHoldsRadiance();
   vtkTexture* GetCubeEnvironment(vtkOpenGLRenderer* ren, vtkObject* reporter);
 
   vtkNew<vtkMatrix4x4> ProjectionGL;

@@ -286,6 +286,7 @@ void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* 
     shader->SetUniform4fv("rfLightPosition", vtkRefractionLights::MaximumLights, positions.data());
     shader->SetUniform3fv("rfLightColour", vtkRefractionLights::MaximumLights, colours.data());
   }
+  shader->SetUniformf("rfSampleCeiling", frame.SampleCeiling);
   shader->SetUniformi("rfParallel", frame.Parallel ? 1 : 0);
   shader->SetUniformMatrix("rfVCDC", frame.Projection);
   shader->SetUniformMatrix("rfDCVC", frame.InverseProjection);

@@ -69,6 +69,10 @@ public:
     // The pixels the glass can cover (x, y, width, height in the targets): the shading and the
     // full-screen composite run only there (vtkRefractionDepthRange::ComputeScreenRectangle).
     int GlassRectangle[4] = { 0, 0, 0, 0 };
+    // The brightest colour a shaded sample keeps before samples are averaged: 1 where the
+    // framebuffer the glass goes into holds display values (fixed point), none (FLT_MAX) where
+    // it holds radiance (a float target: tone mapping follows).
+    float SampleCeiling = 1.f;
   };
 
   /// The shading program for the method and the pass's settings; false when it does not build.

@@ -29,6 +29,7 @@ uniform int rfParallel;
 uniform mat4 rfVCDC;
 uniform mat4 rfDCVC;
 uniform vec4 rfViewport;
+uniform float rfSampleCeiling; // rfKeptSample
 uniform mat3 rfViewToWorld;
 #ifdef RF_ENV_CUBEMAP
 uniform samplerCube rfEnvironmentCube;
@@ -495,6 +496,19 @@ vec3 rfShadeColour(bool glass, vec2 tc, vec3 N1, float depth, int material)
   return colour;
 }
 
+// The colour a shaded sample keeps for the averages made of it (the anti-aliasing's four
+// corners, the silhouette's mipmaps in a multisampled window): at most rfSampleCeiling, which
+// is 1 where the glass goes into a framebuffer of display values. VTK's window clamps each of
+// its own samples to the display when it writes it and resolves the displayed values; the
+// glass's samples are averaged by the pass before they are written, and an average of
+// radiance turned one corner that sees a light of 8 (the HDR studio's boxes) into a saturated
+// pixel among dark ones: brighter than all it shows. A float framebuffer (tone mapping after
+// the pass) gets the radiance (ceiling FLT_MAX).
+vec3 rfKeptSample(vec3 colour)
+{
+  return min(colour, vec3(rfSampleCeiling));
+}
+
 #ifdef RF_CORNER_SAMPLES
 // Anti-aliasing (vtkRefractionPass::SetAntiAliasing): this program shades the lower-left
 // corner of each pixel, where four texels of the G-buffer meet, into the glass colour target;
@@ -541,7 +555,7 @@ vec4 rfCornerSample()
   vec4 data = texelFetch(rfFrontColour, rfPixel, 0);
   colour = mix(colour, data.rgb, data.a);
 #endif
-  return vec4(colour, 1.0);
+  return vec4(rfKeptSample(colour), 1.0);
 }
 #endif
 
@@ -574,7 +588,7 @@ void main()
   vec4 rfDataColour = texelFetch(rfFrontColour, rfPixel, 0);
   rfColour = mix(rfColour, rfDataColour.rgb, rfDataColour.a);
 #endif
-  gl_FragData[0] = vec4(rfColour, 1.0);
+  gl_FragData[0] = vec4(rfKeptSample(rfColour), 1.0);
 #endif
 #endif
 }

@@ -203,6 +203,10 @@ void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* 
   if (useCube)
   {
     cube->Render(ren);
+    if (settings->GetFilteredLookups())
+    {
+      vtkRefractionShadeStage::AddEnvironmentMipmaps(cube);
+    }
   }
   static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())
     ->GetShaderCache()
@@ -420,6 +424,30 @@ void vtkRefractionShadeStage::DrawCornerDepth(
   ostate->vtkglDepthMask(GL_TRUE);
   this->CornerDepthQuad->Render();
   frontDepth->Deactivate();
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionShadeStage::AddEnvironmentMipmaps(vtkOpenGLTexture* cube)
+{
+  vtkTextureObject* texture = cube->GetTextureObject();
+  if (!texture || texture->GetTarget() != GL_TEXTURE_CUBE_MAP ||
+    texture->GetMinificationFilter() != vtkTextureObject::Linear)
+  {
+    return; // already mipmapped, or nearest on purpose
+  }
+
+  // Its levels down to 1 x 1 (VTK leaves the texture's last level at 0, which also stops
+  // glGenerateMipmap at the base level).
+  int levels = 0;
+  for (unsigned int side = texture->GetWidth(); side > 1; side /= 2)
+  {
+    ++levels;
+  }
+  texture->SetMaxLevel(levels);
+  texture->SetMinificationFilter(vtkTextureObject::LinearMipmapLinear);
+  texture->Activate(); // the unit cube->Render gave it: made active and bound again
+  texture->SendParameters();
+  glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
 }
 
 //------------------------------------------------------------------------------

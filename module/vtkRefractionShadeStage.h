@@ -25,6 +25,7 @@ class vtkImageData;
 class vtkMatrix4x4;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderer;
+class vtkOpenGLTexture;
 class vtkRefractionLights;
 class vtkRefractionMethod;
 class vtkRefractionPass;
@@ -101,6 +102,12 @@ private:
 
   struct Program;
   Program* GetProgram(bool debug);
+  // Mip levels for the renderer's cube map where it has none and is filtered linearly, so that
+  // the filtered lookups (rfEnvironment) can average over a ray's spread: VTK 9.1's
+  // vtkEquirectangularToCubeMapTexture fixes its minification filter to linear and makes no
+  // levels, whatever its Mipmap flag says. Made again whenever VTK reloads the texture (its
+  // filter is linear again then). Call with the cube map loaded and bound.
+  static void AddEnvironmentMipmaps(vtkOpenGLTexture* cube);
   void Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, vtkRefractionPass* settings,
     vtkRefractionTargets* targets, const Frame& frame, const std::vector<float>& materialIOR,
     const std::vector<float>& materialSheet, bool debug);

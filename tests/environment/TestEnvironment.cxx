@@ -4,6 +4,10 @@
 //   <method>   sir|dir|isr|ssp with a cube-map environment on the renderer renders (no crash,
 //              no GL error), shows the environment rather than the built-in one, and matches
 //              its baseline (-V baseline -T output folder, VTK's regression-image test)
+//   filtered   a fine checker (0 and 1) through ReadEnvironment, seen through glass that
+//              shrinks it: with FilteredLookups the glass's pixels tend to the checker's mean,
+//              their spread far below that of point lookups (the lookups read the cube map's
+//              mip levels, which VTK 9.1's converter does not make: the pass makes them)
 // Argument 2 is a folder for the environment files the test writes.
 #include "rfTestScene.h"
 #include "vtkISRDistanceFilter.h"
@@ -27,6 +31,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtk_glew.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -158,6 +163,66 @@ int Constant(const std::string& folder)
   return EXIT_SUCCESS;
 }
 
+// The standard deviation of the green channel over the window's middle 41 x 41 pixels.
+double MiddleSpread(vtkImageData* image)
+{
+  double sum = 0.0;
+  double squares = 0.0;
+  int count = 0;
+  for (int y = kSize / 2 - 20; y <= kSize / 2 + 20; ++y)
+  {
+    for (int x = kSize / 2 - 20; x <= kSize / 2 + 20; ++x)
+    {
+      const double g = image->GetScalarComponentAsDouble(x, y, 0, 1) / 255.0;
+      sum += g;
+      squares += g * g;
+      ++count;
+    }
+  }
+  const double mean = sum / count;
+  return std::sqrt(std::max(0.0, squares / count - mean * mean));
+}
+
+int Filtered(const std::string& folder)
+{
+  // Cells of 2 x 2 texels of 1024 x 512: 0.7 degrees, well under the glass's pixels here.
+  const int height = 512;
+  vtkSmartPointer<vtkImageData> checker =
+    LatLong(height, [](double longitude, double latitude, float* c) {
+      const int i = static_cast<int>((longitude + M_PI) / (2.0 * M_PI) * height);
+      const int j = static_cast<int>((latitude + 0.5 * M_PI) / M_PI * height / 2);
+      c[0] = c[1] = c[2] = (i + j) % 2 == 0 ? 1.f : 0.f;
+    });
+  const std::string path = folder + "/checker.exr";
+  std::string error;
+  RF_REQUIRE(vtkRefractionImageIO::WriteImage(checker, nullptr, path, &error), "%s", error.c_str());
+  vtkSmartPointer<vtkTexture> environment =
+    vtkRefractionImageIO::ReadEnvironment(path, &error, 256);
+  RF_REQUIRE(environment, "%s", error.c_str());
+
+  Scene scene;
+  Build(scene, 1.5);
+  scene.Renderer->SetEnvironmentTexture(environment);
+  double spread[2] = { 0.0, 0.0 };
+  for (int filtered = 0; filtered < 2; ++filtered)
+  {
+    scene.Pass->SetFilteredLookups(filtered == 1);
+    scene.Window->Render();
+    const GLenum glError = glGetError();
+    RF_REQUIRE(glError == GL_NO_ERROR, "GL error 0x%x (filtered lookups %d)",
+      static_cast<unsigned>(glError), filtered);
+    spread[filtered] = MiddleSpread(rftest::Grab(scene.Window));
+  }
+  std::printf("a fine checker through the glass: spread of the middle's pixels %.3f with point "
+              "lookups, %.3f filtered\n",
+    spread[0], spread[1]);
+  RF_REQUIRE(spread[0] > 0.1, "the checker does not show through the glass (%.3f)", spread[0]);
+  RF_REQUIRE(spread[1] < 0.5 * spread[0],
+    "the filtered lookups do not average the cube map (spread %.3f against %.3f)", spread[1],
+    spread[0]);
+  return EXIT_SUCCESS;
+}
+
 int Method(const std::string& name, const std::string& folder, int argc, char* argv[])
 {
   // Quadrants of longitude in four colours above the horizon, a darker floor below, so that
@@ -209,13 +274,17 @@ int main(int argc, char* argv[])
 {
   if (argc < 3)
   {
-    std::fprintf(stderr, "usage: TestEnvironment constant|sir|dir|isr|ssp FOLDER [-V baseline -T out]\n");
+    std::fprintf(stderr, "usage: TestEnvironment constant|filtered|sir|dir|isr|ssp FOLDER [-V baseline -T out]\n");
     return EXIT_FAILURE;
   }
   const std::string which = argv[1];
   if (which == "constant")
   {
     return Constant(argv[2]);
+  }
+  if (which == "filtered")
+  {
+    return Filtered(argv[2]);
   }
   if (MethodFromName(which) >= 0)
   {

@@ -162,6 +162,7 @@ int main(int, char*[])
   // The same measure tells SIR (no second interface) apart: T2 is then T1, far off.
   glass->SetMethod(vtkRefractionPass::SIR);
   window->Render();
+  RF_REQUIRE(glass->GetDebugImage(), "no debug image with SIR");
   t2Array = glass->GetDebugImage()->GetPointData()->GetArray("T2");
   double sirMean = 0.0;
   int sirCount = 0;

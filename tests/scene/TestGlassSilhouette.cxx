@@ -202,6 +202,7 @@ int Inside(const std::string& outDir)
       "x_samples.png");
   rftest::WritePNG(pixels, outDir + "/silhouette_inside_" + std::to_string(window->GetMultiSamples()) +
       "x_pixels.png");
+  RF_REQUIRE(pass->GetDebugImage(), "no debug image (the shading program did not build?)");
   vtkDataArray* flags = pass->GetDebugImage()->GetPointData()->GetArray("Flags");
   RF_REQUIRE(flags && flags->GetNumberOfTuples() == kSize * kSize, "no debug flags");
   auto isGlass = [&](int x, int y) {

@@ -33,29 +33,6 @@ bool Dominates(const CostError& a, const CostError& b)
   return a.first <= b.first && a.second <= b.second && (a.first < b.first || a.second < b.second);
 }
 
-// The size the plot and the summary show: the one nearest 512 (the paper's Table 1 size).
-int SizeNearest512(const std::vector<Row>& rows)
-{
-  int size = 0;
-  for (const Row& r : rows)
-  {
-    if (size == 0 || std::abs(r.Size - 512) < std::abs(size - 512))
-      size = r.Size;
-  }
-  return size;
-}
-
-std::vector<std::string> Meshes(const std::vector<Row>& rows)
-{
-  std::vector<std::string> meshes;
-  for (const Row& r : rows)
-  {
-    if (std::find(meshes.begin(), meshes.end(), r.Mesh) == meshes.end())
-      meshes.push_back(r.Mesh);
-  }
-  return meshes;
-}
-
 // The rows a mesh's front is made of: every glass setting at that size (not the pass without
 // glass, not the scene rows without the scene refracted, which draw another picture).
 std::vector<const Row*> Candidates(const std::vector<Row>& rows, const std::string& mesh, int size)
@@ -101,6 +78,29 @@ std::vector<size_t> ParetoFront(const std::vector<CostError>& points)
   std::stable_sort(front.begin(), front.end(),
     [&points](size_t a, size_t b) { return points[a] < points[b]; });
   return front;
+}
+
+// The size the plot and the summary show: the one nearest 512 (the paper's Table 1 size).
+int SizeNearest512(const std::vector<Row>& rows)
+{
+  int size = 0;
+  for (const Row& r : rows)
+  {
+    if (size == 0 || std::abs(r.Size - 512) < std::abs(size - 512))
+      size = r.Size;
+  }
+  return size;
+}
+
+std::vector<std::string> Meshes(const std::vector<Row>& rows)
+{
+  std::vector<std::string> meshes;
+  for (const Row& r : rows)
+  {
+    if (std::find(meshes.begin(), meshes.end(), r.Mesh) == meshes.end())
+      meshes.push_back(r.Mesh);
+  }
+  return meshes;
 }
 
 bool IsDefaultSetting(const Setting& s)

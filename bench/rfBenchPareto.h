@@ -22,6 +22,12 @@ using CostError = std::pair<double, double>;
 // with a negative or non-finite cost or error (not measured) take no part.
 std::vector<size_t> ParetoFront(const std::vector<CostError>& points);
 
+// The size the plot and the summaries show: the one nearest 512 (the paper's Table 1 size).
+int SizeNearest512(const std::vector<Row>& rows);
+
+// The meshes of the rows, in the order they first appear.
+std::vector<std::string> Meshes(const std::vector<Row>& rows);
+
 // True for the pass's default setting (vtkRefractionPass as constructed: DIR, 5 steps, the
 // depth range by reduction, filtered lookups, no anti-aliasing, no TIR followed).
 bool IsDefaultSetting(const Setting& setting);

@@ -1,5 +1,6 @@
 #include "rfBenchReport.h"
 
+#include "rfBenchAccuracy.h"
 #include "rfBenchPareto.h"
 #include "rfBenchTiming.h"
 #include "vtkRefractionPass.h"
@@ -125,7 +126,7 @@ bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
       any->RefFullMs / 1000.0, any->RefFullSSMs / 1000.0);
     f << line;
   }
-  f << "\n" << ParetoSummary(rows);
+  f << "\n" << AccuracySummary(rows) << ParetoSummary(rows);
   f << "## All rows\n\n| mesh | size | method | ms [min-max] | ratio [min-max] | stage ms | "
        "pre ms | B/px | PSNR two | PSNR full | PSNR full SS | model vs full SS | SSIM full SS | TIR / "
        "rest (full SS) | rim / edge (full SS) | brightness | TIR / rest (two) | T2 deg mean/p95 | TIR "

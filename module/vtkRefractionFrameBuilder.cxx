@@ -92,6 +92,14 @@ bool vtkRefractionFrameBuilder::DrawFramebufferHoldsRadiance()
   {
     return false;
   }
+  // The component type of an attachment point with nothing attached is an invalid query.
+  GLint object = GL_NONE;
+  glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, static_cast<GLenum>(drawBuffer),
+    GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &object);
+  if (object == GL_NONE)
+  {
+    return false;
+  }
   GLint type = GL_NONE;
   glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, static_cast<GLenum>(drawBuffer),
     GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &type);

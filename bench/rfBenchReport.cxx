@@ -104,8 +104,9 @@ bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
   {
     if (r.Size != tableSize || r.Config.Method == "none" || r.Config.NoScene)
       continue;
-    if (r.Config.Method == "DIR" && (r.Config.Steps != 5 || r.Config.Bounds ||
-                                      r.Config.Adaptive || r.Config.Nearest || r.Config.Paper))
+    // DIR's column is the default setting (the other DIR rows, anti-aliased or following
+    // reflections among them, would overwrite it in the order of the rows).
+    if (r.Config.Method == "DIR" && !IsDefaultSetting(r.Config))
       continue;
     table[r.Mesh][r.Config.Method] = &r;
   }

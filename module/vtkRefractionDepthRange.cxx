@@ -40,7 +40,8 @@ void vtkRefractionDepthRange::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-bool vtkRefractionDepthRange::Reduce(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets)
+bool vtkRefractionDepthRange::Reduce(
+  vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, const int rectangle[4])
 {
   vtkShaderProgram* first = this->ReadyProgram(renWin, this->FirstQuad, true);
   vtkShaderProgram* later = this->ReadyProgram(renWin, this->LaterQuad, false);
@@ -63,6 +64,18 @@ bool vtkRefractionDepthRange::Reduce(vtkOpenGLRenderWindow* renWin, vtkRefractio
     fbo->RemoveDepthAttachment();
     vtkTextureObject* source = targets->Get(vtkRefractionTargets::BACK_SURFACE);
     const auto& levels = targets->GetReductionLevels();
+    // The source's texels that hold data: [x0, x1) x [y0, y1). Outside them a level keeps what
+    // an earlier frame left; the reads are clamped into them (a repeated texel leaves a min or
+    // a max as it is), so that stays unread.
+    int valid[4] = { std::max(rectangle[0], 0), std::max(rectangle[1], 0),
+      std::min(rectangle[0] + rectangle[2], static_cast<int>(source->GetWidth())),
+      std::min(rectangle[1] + rectangle[3], static_cast<int>(source->GetHeight())) };
+    if (valid[2] <= valid[0] || valid[3] <= valid[1])
+    {
+      // No glass on screen: nothing is shaded, so nothing reads the range.
+      valid[0] = valid[1] = 0;
+      valid[2] = valid[3] = 0;
+    }
     for (size_t level = 0; level < levels.size(); ++level)
     {
       vtkOpenGLQuadHelper* quad = level == 0 ? this->FirstQuad.get() : this->LaterQuad.get();
@@ -73,18 +86,26 @@ bool vtkRefractionDepthRange::Reduce(vtkOpenGLRenderWindow* renWin, vtkRefractio
       fbo->ActivateDrawBuffers(1);
       const int w = static_cast<int>(target->GetWidth());
       const int h = static_cast<int>(target->GetHeight());
+      // The target's texels whose blocks hold valid source texels.
+      const int block = vtkRefractionTargets::ReductionBlock;
+      const int written[4] = { valid[0] / block, valid[1] / block,
+        std::min((valid[2] + block - 1) / block, w), std::min((valid[3] + block - 1) / block, h) };
+      if (written[2] <= written[0] || written[3] <= written[1])
+      {
+        break;
+      }
       ostate->vtkglViewport(0, 0, w, h);
-      ostate->vtkglScissor(0, 0, w, h);
+      ostate->vtkglScissor(written[0], written[1], written[2] - written[0], written[3] - written[1]);
       source->Activate();
       program->SetUniformi("rfSource", source->GetTextureUnit());
-      const int size[2] = { static_cast<int>(source->GetWidth()),
-        static_cast<int>(source->GetHeight()) };
-      program->SetUniform2i("rfSourceSize", size);
       const int targetSize[2] = { w, h };
       program->SetUniform2i("rfTargetSize", targetSize);
+      program->SetUniform2i("rfSourceValidFirst", valid);
+      program->SetUniform2i("rfSourceValidEnd", valid + 2);
       quad->Render();
       source->Deactivate();
       source = target;
+      std::copy(written, written + 4, valid);
     }
   }
   fbo->UnBind();

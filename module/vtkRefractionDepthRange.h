@@ -32,8 +32,11 @@ public:
   vtkTypeMacro(vtkRefractionDepthRange, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// Reduces the depths of BACK_SURFACE into the targets' reduction chain. Returns false on a shader error.
-  bool Reduce(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets);
+  /// Reduces the depths of BACK_SURFACE inside `rectangle` (x, y, width, height in its texels:
+  /// where the glass can be, ComputeScreenRectangle; the back surface is empty elsewhere) into
+  /// the targets' reduction chain. Each level is written and read only over the blocks that
+  /// rectangle reaches. Returns false on a shader error.
+  bool Reduce(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, const int rectangle[4]);
 
   /// The depth range (positive distances) of the props' bounding boxes, clipped to the near
   /// plane (parts of a box behind it are never captured: the search starts there).

@@ -471,7 +471,7 @@ void vtkRefractionPass::RenderGlass(
     this->StageTimers->Start(TIMED_DEPTH_RANGE);
     if (reduction)
     {
-      this->DepthRange->Reduce(renWin, this->Targets);
+      this->DepthRange->Reduce(renWin, this->Targets, frame.GlassRectangle);
     }
     else if (!exchange) // agreed over the ranks above
     {

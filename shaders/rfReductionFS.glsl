@@ -9,7 +9,10 @@
 // "no back surface".
 in vec2 texCoord;
 uniform sampler2D rfSource;
-uniform ivec2 rfSourceSize;
+// The source's texels that hold data, [first, end): reads are clamped into them (a repeated
+// texel leaves a min or a max as it is); outside, a level holds what an earlier frame left.
+uniform ivec2 rfSourceValidFirst;
+uniform ivec2 rfSourceValidEnd;
 uniform ivec2 rfTargetSize;
 //VTK::Output::Dec
 void main()
@@ -21,7 +24,8 @@ void main()
   {
     for (int i = 0; i < RF_REDUCTION_BLOCK; ++i)
     {
-      vec4 v = texelFetch(rfSource, min(base + ivec2(i, j), rfSourceSize - 1), 0);
+      vec4 v = texelFetch(rfSource, clamp(base + ivec2(i, j), rfSourceValidFirst,
+        rfSourceValidEnd - 1), 0);
 #ifdef RF_REDUCTION_FIRST
       if (v.a > 0.0)
       {

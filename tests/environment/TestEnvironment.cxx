@@ -68,6 +68,25 @@ vtkSmartPointer<vtkImageData> LatLong(int height, Colour colour)
   return image;
 }
 
+// The image written to path (EXR) and read back through ReadEnvironment as a user's file is,
+// as a cube map of side cubeSize; nullptr, with the reason printed, where either step fails.
+vtkSmartPointer<vtkTexture> ThroughFile(vtkImageData* image, const std::string& path, int cubeSize)
+{
+  std::string error;
+  if (!vtkRefractionImageIO::WriteImage(image, nullptr, path, &error))
+  {
+    std::fprintf(stderr, "writing %s: %s\n", path.c_str(), error.c_str());
+    return nullptr;
+  }
+  vtkSmartPointer<vtkTexture> environment =
+    vtkRefractionImageIO::ReadEnvironment(path, &error, cubeSize);
+  if (!environment)
+  {
+    std::fprintf(stderr, "reading %s: %s\n", path.c_str(), error.c_str());
+  }
+  return environment;
+}
+
 struct Scene
 {
   vtkNew<vtkRenderer> Renderer;
@@ -121,11 +140,8 @@ int Constant(const std::string& folder)
     c[1] = colour[1];
     c[2] = colour[2];
   });
-  const std::string path = folder + "/constant.exr";
-  std::string error;
-  RF_REQUIRE(vtkRefractionImageIO::WriteImage(flat, nullptr, path, &error), "%s", error.c_str());
-  vtkSmartPointer<vtkTexture> environment = vtkRefractionImageIO::ReadEnvironment(path, &error, 64);
-  RF_REQUIRE(environment, "%s", error.c_str());
+  vtkSmartPointer<vtkTexture> environment = ThroughFile(flat, folder + "/constant.exr", 64);
+  RF_REQUIRE(environment, "the environment file could not be written or read back");
   RF_REQUIRE(environment->GetCubeMap(), "ReadEnvironment did not return a cube map");
 
   Scene scene;
@@ -193,12 +209,8 @@ int Filtered(const std::string& folder)
       const int j = static_cast<int>((latitude + 0.5 * M_PI) / M_PI * height / 2);
       c[0] = c[1] = c[2] = (i + j) % 2 == 0 ? 1.f : 0.f;
     });
-  const std::string path = folder + "/checker.exr";
-  std::string error;
-  RF_REQUIRE(vtkRefractionImageIO::WriteImage(checker, nullptr, path, &error), "%s", error.c_str());
-  vtkSmartPointer<vtkTexture> environment =
-    vtkRefractionImageIO::ReadEnvironment(path, &error, 256);
-  RF_REQUIRE(environment, "%s", error.c_str());
+  vtkSmartPointer<vtkTexture> environment = ThroughFile(checker, folder + "/checker.exr", 256);
+  RF_REQUIRE(environment, "the environment file could not be written or read back");
 
   Scene scene;
   Build(scene, 1.5);
@@ -237,12 +249,8 @@ int Method(const std::string& name, const std::string& folder, int argc, char* a
       c[k] = quadrant[q][k] * shade;
     }
   });
-  const std::string path = folder + "/quadrants.exr";
-  std::string error;
-  RF_REQUIRE(vtkRefractionImageIO::WriteImage(sky, nullptr, path, &error), "%s", error.c_str());
-  vtkSmartPointer<vtkTexture> environment =
-    vtkRefractionImageIO::ReadEnvironment(path, &error, 128);
-  RF_REQUIRE(environment, "%s", error.c_str());
+  vtkSmartPointer<vtkTexture> environment = ThroughFile(sky, folder + "/quadrants.exr", 128);
+  RF_REQUIRE(environment, "the environment file could not be written or read back");
 
   Scene scene;
   Build(scene, 1.5);

@@ -151,6 +151,39 @@ inline double PSNROnMask(
     ? psnr
     : -1.0;
 }
+
+/// The pixels (index y * width + x) the reference sees glass in, with all eight neighbours
+/// glass too: away from the silhouette, which a multisampled window blends with the background
+/// where the reference's pixel centre sees glass alone.
+inline std::vector<vtkIdType> InteriorHitPixels(vtkImageData* reference)
+{
+  vtkDataArray* hit = reference->GetPointData()->GetArray("Hit");
+  int dims[3];
+  reference->GetDimensions(dims);
+  const int width = dims[0];
+  const int height = dims[1];
+  auto isHit = [&](int x, int y) {
+    return x >= 0 && y >= 0 && x < width && y < height &&
+      hit->GetComponent(static_cast<vtkIdType>(y) * width + x, 0) > 0.5;
+  };
+  std::vector<vtkIdType> pixels;
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      bool inside = true;
+      for (int k = 0; k < 9; ++k)
+      {
+        inside = inside && isHit(x + k % 3 - 1, y + k / 3 - 1);
+      }
+      if (inside)
+      {
+        pixels.push_back(static_cast<vtkIdType>(y) * width + x);
+      }
+    }
+  }
+  return pixels;
+}
 }
 
 #endif

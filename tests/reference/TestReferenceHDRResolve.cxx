@@ -16,6 +16,7 @@
 //    Reinhard maps x to (y / (1 + y))^(1 / 2.2), y = x^2.2: over a constant map of 4 the glass
 //    reads 0.979, over 1 it reads 0.730. A ceiling applied there made both 0.730.
 // Needs X (xvfb-run -a) or EGL: the tests' window.
+#include "rfReferenceScene.h"
 #include "rfTestScene.h"
 #include "rf_require.h"
 #include "vtkRefractionPass.h"
@@ -66,33 +67,6 @@ vtkSmartPointer<vtkOpenGLTexture> MakeCube(int side, const std::function<float(i
   return cube;
 }
 
-// The glass pixels whose eight neighbours are glass too (by the reference's hit mask): the
-// silhouette blends with the background in a multisampled window.
-std::vector<vtkIdType> InteriorPixels(vtkImageData* reference)
-{
-  vtkDataArray* hit = reference->GetPointData()->GetArray("Hit");
-  auto isHit = [&](int x, int y) {
-    return x >= 0 && y >= 0 && x < Size && y < Size && hit->GetComponent(y * Size + x, 0) > 0.5;
-  };
-  std::vector<vtkIdType> pixels;
-  for (int y = 0; y < Size; ++y)
-  {
-    for (int x = 0; x < Size; ++x)
-    {
-      bool inside = true;
-      for (int k = 0; k < 9; ++k)
-      {
-        inside = inside && isHit(x + k % 3 - 1, y + k / 3 - 1);
-      }
-      if (inside)
-      {
-        pixels.push_back(y * Size + x);
-      }
-    }
-  }
-  return pixels;
-}
-
 double Brightest(const std::vector<float>& colour, vtkIdType pixel)
 {
   return std::max({ colour[3 * pixel], colour[3 * pixel + 1], colour[3 * pixel + 2] });
@@ -139,7 +113,7 @@ int main()
       truth[3 * i + c] = static_cast<float>(std::min(1.0, truthArray->GetComponent(i, c)));
     }
   }
-  const std::vector<vtkIdType> interior = InteriorPixels(reference->GetOutput());
+  const std::vector<vtkIdType> interior = rftest::InteriorHitPixels(reference->GetOutput());
   int fireflies = 0;
   int bright = 0;
   int dotted = 0;

@@ -61,6 +61,9 @@ std::vector<Column> Columns(int stageCount)
     [](Row& r, const std::string& v) { r.Config.NoScene = v == "0"; } });
   c.push_back({ "tir_bounces", [](const Row& r) { return std::to_string(r.Config.Bounces); },
     [](Row& r, const std::string& v) { r.Config.Bounces = std::atoi(v.c_str()); } });
+  c.push_back({ "exit_reflection",
+    [](const Row& r) { return std::string(r.Config.ExitReflection ? "1" : "0"); },
+    [](Row& r, const std::string& v) { r.Config.ExitReflection = v == "1"; } });
   c.push_back({ "peel_layers", [](const Row& r) { return std::to_string(r.Config.Layers); },
     [](Row& r, const std::string& v) { r.Config.Layers = std::atoi(v.c_str()); } });
   c.push_back({ "anti_aliasing",

@@ -15,6 +15,8 @@ std::vector<Setting> PresetSettings(const Options& o)
   antiAliased.AntiAliasing = true;
   Setting bounces{ "DIR", 5 };
   bounces.Bounces = 2;
+  Setting exitReflection{ "DIR", 5 };
+  exitReflection.ExitReflection = true;
   auto peel = [](int layers, int tirBounces) {
     Setting setting{ "PEEL", 0 };
     setting.Layers = layers;
@@ -37,6 +39,7 @@ std::vector<Setting> PresetSettings(const Options& o)
       }
     }
     settings.push_back(bounces);
+    settings.push_back(exitReflection);
     settings.push_back({ "SIR", 0 });
     for (int layers : { 2, 4, 8 })
       settings.push_back(peel(layers, 0));
@@ -66,6 +69,7 @@ std::vector<Setting> PresetSettings(const Options& o)
   settings.push_back({ "DIR", 5, false, false, false, true });
   settings.push_back(antiAliased);
   settings.push_back(bounces);
+  settings.push_back(exitReflection);
   settings.push_back({ "ISR", 0 });
   settings.push_back({ "SSP", 0 });
   for (int layers : { 2, 4, 8 })
@@ -127,6 +131,7 @@ void Apply(vtkRefractionPass* pass, const Setting& setting)
   pass->SetAntiAliasing(setting.AntiAliasing);
   pass->SetMultiSampleSilhouette(!setting.PixelComposite);
   pass->SetTIRBounces(setting.Bounces);
+  pass->SetExitReflection(setting.ExitReflection);
   pass->SetPeelLayers(std::max(setting.Layers, 2));
   pass->SetFilteredLookups(!setting.PointLookups);
 }

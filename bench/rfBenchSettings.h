@@ -25,6 +25,7 @@ struct Setting
   bool AntiAliasing = false; // SetAntiAliasing(true): four rays per pixel
   bool PixelComposite = false; // SetMultiSampleSilhouette(false): composited pixel by pixel
   int Bounces = 0;           // SetTIRBounces: total internal reflections followed
+  bool ExitReflection = false; // SetExitReflection: the exit's reflected share followed
   int Layers = 0;            // PEEL: SetPeelLayers (K)
   bool PointLookups = false; // SetFilteredLookups(false): one direction per ray
   std::string Label() const
@@ -46,6 +47,7 @@ struct Setting
     {
       s << " TIR " << Bounces;
     }
+    s << (ExitReflection ? " exit" : "");
     return s.str();
   }
 };

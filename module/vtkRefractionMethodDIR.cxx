@@ -28,6 +28,10 @@ void vtkRefractionMethodDIR::AppendDefines(std::ostream& defines, vtkRefractionP
   {
     defines << "#define RF_TIR_BOUNCES " << settings->GetTIRBounces() << "\n";
   }
+  if (settings->GetExitReflection() && settings->GetFresnel())
+  {
+    defines << "#define RF_EXIT_REFLECTION\n";
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -106,6 +106,7 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
                                                                 : "auto")
      << "\n";
   os << indent << "TIRBounces: " << this->TIRBounces << "\n";
+  os << indent << "ExitReflection: " << this->ExitReflection << "\n";
   os << indent << "PeelLayers: " << this->PeelLayers << "\n";
   os << indent << "PeelLayersFound: " << this->PeelLayersFound << "\n";
   os << indent << "SHSmoothing: " << this->SHSmoothing << "\n";

@@ -44,16 +44,10 @@ bool rfFindExit(vec3 P1, vec3 V, vec3 N1, vec3 T1, float etaIn, out vec3 P2, out
     rfBackNormalAt(tc, P1, N2);
 }
 
-#ifdef RF_TIR_BOUNCES
-uniform float rfGlassDiagonal;
-
-// Beyond the paper (total internal reflection followed, vtkRefractionPass::SetTIRBounces):
-// the ray P + t T, mirrored inside the glass at an exit, to its next interface. Inside means
-// between the front capture's depth and the back capture's at the ray's texel; the ray is
-// marched in 24 steps over at most the glass's bounding-box diagonal (no chord is longer),
-// the first step outside is bisected, and the exit is through whichever of the two surfaces
-// the last inside point was nearer. False where the ray leaves the image or no usable normal
-// is captured there.
+#if defined(RF_TIR_BOUNCES) || defined(RF_EXIT_REFLECTION)
+// Whether Q lies inside the glass as the two captures tell it: between the front capture's
+// depth and the back capture's at Q's texel (tc), and how far behind the front (toFront) and
+// before the back (toBack) it lies.
 bool rfInsideAt(vec3 Q, out vec2 tc, out float toFront, out float toBack)
 {
   tc = rfProjectToTexture(Q);
@@ -73,6 +67,54 @@ bool rfInsideAt(vec3 Q, out vec2 tc, out float toFront, out float toBack)
   return front.w > 0.5 && back > 0.0 && toFront >= -slack && toBack >= -slack;
 }
 
+#endif
+
+#ifdef RF_EXIT_REFLECTION
+// The share an exit reflects back inside, its next interface estimated without a search: one
+// chord on (inside a sphere every chord of a reflected ray has the length of the one before),
+// then onto the depth of whichever captured surface is nearer there, whose normal it leaves
+// through. False off the image or off the glass.
+bool rfReflectedExit(vec3 P, vec3 T, float chord, out vec3 exitP, out vec3 exitN)
+{
+  exitP = P + chord * T;
+  exitN = vec3(0.0);
+  vec2 tc;
+  float toFront;
+  float toBack;
+  rfInsideAt(exitP, tc, toFront, toBack);
+  if (any(lessThan(tc, vec2(0.0))) || any(greaterThan(tc, vec2(1.0))))
+  {
+    return false;
+  }
+  ivec2 texel = ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0));
+  vec4 front = texelFetch(rfFrontSurface, texel, 0);
+  vec4 back = textureLod(rfBackSurface, tc, 0.0);
+  bool haveFront = front.w > 0.5;
+  bool haveBack = back.a > 0.0;
+  if (!haveFront && !haveBack)
+  {
+    return false;
+  }
+  bool throughFront = haveFront && (!haveBack || abs(toFront) < abs(toBack));
+  float shift = throughFront ? toFront : -toBack; // depth past the surface
+  if (abs(T.z) > 1e-3)
+  {
+    exitP += clamp(-shift / -T.z, -chord, chord) * T;
+  }
+  exitN = throughFront ? rf_oct_decode(front.xy) : back.xyz;
+  return dot(exitN, exitN) > 0.0;
+}
+#endif
+
+#ifdef RF_TIR_BOUNCES
+uniform float rfGlassDiagonal;
+
+// Beyond the paper (total internal reflection followed, vtkRefractionPass::SetTIRBounces):
+// the ray P + t T, mirrored inside the glass at an exit, to its next interface. The ray is
+// marched in 24 steps over at most the glass's bounding-box diagonal (no chord is longer)
+// while rfInsideAt holds, the first step outside is bisected, and the exit is through
+// whichever of the two surfaces the last inside point was nearer. False where the ray leaves
+// the image or no usable normal is captured there.
 bool rfFollowInside(vec3 P, vec3 T, out vec3 exitP, out vec3 exitN)
 {
   exitP = P;

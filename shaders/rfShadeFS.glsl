@@ -302,7 +302,7 @@ rfRay rfTraceRay(vec2 tc, vec3 N1, float depth, int material, int channel)
 #if defined(RF_METHOD_PEEL) || defined(RF_METHOD_SH)
   float insideLength = 0.0;
 #endif
-#ifdef RF_METHOD_PEEL
+#if defined(RF_METHOD_PEEL) || defined(RF_EXIT_REFLECTION)
   vec3 branchP = P;
   vec3 branchT = T2;
   float branchWeight = 0.0;
@@ -348,6 +348,7 @@ rfRay rfTraceRay(vec2 tc, vec3 N1, float depth, int material, int channel)
 #ifdef RF_TIR_BOUNCES
     // Totally reflected: mirrored inside and followed to the next exit (rfMethodDIR.glsl).
     vec3 inside = T1;
+    vec3 chordStart = P;
     for (int bounce = 0; bounce < RF_TIR_BOUNCES && tir == 1; ++bounce)
     {
       vec3 mirrored = reflect(inside, normalize(N2));
@@ -357,10 +358,40 @@ rfRay rfTraceRay(vec2 tc, vec3 N1, float depth, int material, int channel)
       {
         break;
       }
+      chordStart = P2;
       P2 = nextP;
       N2 = nextN;
       inside = mirrored;
       tir = rfRefractWithPolicy(inside, -normalize(N2), ior, T2);
+    }
+#endif
+#if defined(RF_EXIT_REFLECTION) && defined(RF_FRESNEL) && !defined(RF_DEBUG_OUTPUT)
+    // The share the exit reflects back inside (Fresnel), to where it leaves the glass
+    // (vtkRefractionPass::SetExitReflection), as PEEL follows it: the two-interface model
+    // drops this light. Its next interface is estimated one chord on (rfReflectedExit).
+    if (tir == 0)
+    {
+      vec3 outward = normalize(N2);
+#ifdef RF_TIR_BOUNCES
+      vec3 arriving = inside;
+#else
+      vec3 arriving = T1;
+      vec3 chordStart = P;
+#endif
+      branchWeight = rfk_fresnel_dielectric(dot(arriving, outward), ior);
+      vec3 mirrored = reflect(arriving, outward);
+      vec3 nextP;
+      vec3 nextN;
+      bool found = rfReflectedExit(P2, mirrored, length(P2 - chordStart), nextP, nextN);
+      if (branchWeight > 0.0 && found)
+      {
+        branchP = nextP;
+        rfRefractWithPolicy(mirrored, -normalize(nextN), ior, branchT);
+      }
+      else
+      {
+        branchWeight = 0.0;
+      }
     }
 #endif
   }
@@ -378,7 +409,7 @@ rfRay rfTraceRay(vec2 tc, vec3 N1, float depth, int material, int channel)
 #if defined(RF_METHOD_PEEL) || defined(RF_METHOD_SH)
   ray.insideLength = insideLength;
 #endif
-#ifdef RF_METHOD_PEEL
+#if defined(RF_METHOD_PEEL) || defined(RF_EXIT_REFLECTION)
   ray.branchP = branchP;
   ray.branchT = branchT;
   ray.branchWeight = branchWeight;
@@ -398,7 +429,7 @@ vec3 rfRayColour(rfRay ray, float reflectedWidth, float transmittedWidth)
 #endif
   rfEnvironmentWidth = transmittedWidth;
   vec3 transmitted = rfTransmittedColour(ray.tc, ray.N1, ray.T1, ray.P2, ray.T2);
-#ifdef RF_METHOD_PEEL
+#if defined(RF_METHOD_PEEL) || defined(RF_EXIT_REFLECTION)
   if (ray.branchWeight > 0.0)
   {
     transmitted = mix(transmitted, rfBehind(ray.branchP, ray.branchT), ray.branchWeight);

@@ -162,6 +162,14 @@ int main()
     // EGL frames show the same, before and after the kernel): a defect of the pass's scene
     // capture, not of the shader, which compiles (no error) and draws under X.
     { "SSP", [](vtkRefractionPass* p) { p->SetMethod(vtkRefractionPass::SSP); }, true, false },
+    { "exit reflection", [](vtkRefractionPass* p) { p->ExitReflectionOn(); }, true, true },
+    { "exit reflection, TIR followed twice, anti-aliasing",
+      [](vtkRefractionPass* p) {
+        p->ExitReflectionOn();
+        p->SetTIRBounces(2);
+        p->AntiAliasingOn();
+      },
+      true, true },
     { "PEEL (K = 4)", [](vtkRefractionPass* p) { p->SetMethod(vtkRefractionPass::PEEL); },
       true, true },
     { "PEEL K = 8, TIR followed twice, reflect policy",

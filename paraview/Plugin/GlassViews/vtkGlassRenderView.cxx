@@ -194,6 +194,7 @@ vtkGlassRenderViewSetting(AbsorptionDistance, double, SetAbsorptionDistance, Get
 vtkGlassRenderViewSetting(AntiAliasing, int, SetAntiAliasing, GetAntiAliasing);
 vtkGlassRenderViewSetting(Layers, int, SetPeelLayers, GetPeelLayers);
 vtkGlassRenderViewSetting(TIRBounces, int, SetTIRBounces, GetTIRBounces);
+vtkGlassRenderViewSetting(ExitReflection, int, SetExitReflection, GetExitReflection);
 
 int vtkGlassRenderView::GetNumberOfGlassProps()
 {

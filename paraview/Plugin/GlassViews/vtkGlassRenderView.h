@@ -51,7 +51,7 @@ public:
 
   ///@{
   /// The pass's settings (see vtkRefractionPass): EnvironmentMode, SceneRefraction,
-  /// DataColour, AbsorptionDistance, AntiAliasing, PeelLayers and TIRBounces.
+  /// DataColour, AbsorptionDistance, AntiAliasing, PeelLayers, TIRBounces and ExitReflection.
   void SetGlassEnvironment(int mode);
   int GetGlassEnvironment();
   void SetGlassSceneRefraction(int on);
@@ -66,6 +66,8 @@ public:
   int GetGlassLayers();
   void SetGlassTIRBounces(int bounces);
   int GetGlassTIRBounces();
+  void SetGlassExitReflection(int on);
+  int GetGlassExitReflection();
   ///@}
 
   /// Glass props the pass drew in the last render (for tests).

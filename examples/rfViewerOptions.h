@@ -40,6 +40,7 @@ struct rfViewerOptions
   bool Interactive = false;
   bool NoText = false;
   bool AntiAliasing = false;
+  bool ExitReflection = false;
   bool Masks = false;
   bool Help = false;
   bool EGL = false; // accepted for older scripts: headless rendering always tries EGL first

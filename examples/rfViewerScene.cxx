@@ -386,6 +386,7 @@ int BuildScene(const rfViewerOptions& o, const rfViewerSettings& s, Scene& scene
   scene.Pass->SetSearchSteps(s.Steps);
   scene.Pass->SetPeelLayers(s.Layers);
   scene.Pass->SetAntiAliasing(o.AntiAliasing);
+  scene.Pass->SetExitReflection(o.ExitReflection);
   scene.Renderer->SetPass(scene.Pass);
 
   scene.Text = vtkSmartPointer<vtkTextActor>::New();
@@ -413,6 +414,10 @@ void SetStatus(Scene& scene, double milliseconds, int timeIndex)
   if (scene.Pass->GetAntiAliasing())
   {
     line << "  AA";
+  }
+  if (scene.Pass->GetExitReflection() && scene.Pass->GetMethod() == vtkRefractionPass::DIR)
+  {
+    line << "  exit reflection";
   }
   line.precision(1);
   line << "  " << milliseconds << " ms";

@@ -276,7 +276,7 @@ public:
    * ray there is as long as the one before), refracted out there, and mixed in by its Fresnel
    * share, as PEEL does at its first exit. On the benchmark's sphere at 512 px against the
    * supersampled full reference 29.5 -> 33.3 dB, torus 28.4 -> 29.3, isosurface 19.9 -> 20.2,
-   * bunny 15.5 -> 15.6, for about 1.15-1.3 times DIR's frame on llvmpipe. Without Fresnel, or
+   * bunny 15.5 -> 15.6, for 5-9 % more than DIR's frame on llvmpipe. Without Fresnel, or
    * with another method, nothing changes (PEEL follows it through its layers already).
    */
   vtkSetMacro(ExitReflection, bool);

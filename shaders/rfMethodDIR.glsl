@@ -66,7 +66,6 @@ bool rfInsideAt(vec3 Q, out vec2 tc, out float toFront, out float toBack)
   toBack = back - depth;
   return front.w > 0.5 && back > 0.0 && toFront >= -slack && toBack >= -slack;
 }
-
 #endif
 
 #ifdef RF_EXIT_REFLECTION
@@ -96,10 +95,11 @@ bool rfReflectedExit(vec3 P, vec3 T, float chord, out vec3 exitP, out vec3 exitN
     return false;
   }
   bool throughFront = haveFront && (!haveBack || abs(toFront) < abs(toBack));
-  float shift = throughFront ? toFront : -toBack; // depth past the surface
+  // How much deeper than that surface the point lies; along T the depth -z changes by -T.z.
+  float pastSurface = throughFront ? toFront : -toBack;
   if (abs(T.z) > 1e-3)
   {
-    exitP += clamp(-shift / -T.z, -chord, chord) * T;
+    exitP += clamp(pastSurface / T.z, -chord, chord) * T;
   }
   exitN = throughFront ? rf_oct_decode(front.xy) : back.xyz;
   return dot(exitN, exitN) > 0.0;

@@ -17,6 +17,8 @@ std::vector<Setting> PresetSettings(const Options& o)
   bounces.Bounces = 2;
   Setting exitReflection{ "DIR", 5 };
   exitReflection.ExitReflection = true;
+  Setting bouncesAndExit = bounces;
+  bouncesAndExit.ExitReflection = true;
   auto peel = [](int layers, int tirBounces) {
     Setting setting{ "PEEL", 0 };
     setting.Layers = layers;
@@ -40,6 +42,7 @@ std::vector<Setting> PresetSettings(const Options& o)
     }
     settings.push_back(bounces);
     settings.push_back(exitReflection);
+    settings.push_back(bouncesAndExit);
     settings.push_back({ "SIR", 0 });
     for (int layers : { 2, 4, 8 })
       settings.push_back(peel(layers, 0));
@@ -70,6 +73,7 @@ std::vector<Setting> PresetSettings(const Options& o)
   settings.push_back(antiAliased);
   settings.push_back(bounces);
   settings.push_back(exitReflection);
+  settings.push_back(bouncesAndExit);
   settings.push_back({ "ISR", 0 });
   settings.push_back({ "SSP", 0 });
   for (int layers : { 2, 4, 8 })

@@ -47,18 +47,19 @@ bool rfFindExit(vec3 P1, vec3 V, vec3 N1, vec3 T1, float etaIn, out vec3 P2, out
 #if defined(RF_TIR_BOUNCES) || defined(RF_EXIT_REFLECTION)
 // Whether Q lies inside the glass as the two captures tell it: between the front capture's
 // depth and the back capture's at Q's texel (tc), and how far behind the front (toFront) and
-// before the back (toBack) it lies.
-bool rfInsideAt(vec3 Q, out vec2 tc, out float toFront, out float toBack)
+// before the back (toBack) it lies; front is that texel of the front capture (0 off the image).
+bool rfInsideAt(vec3 Q, out vec2 tc, out float toFront, out float toBack, out vec4 front)
 {
   tc = rfProjectToTexture(Q);
   toFront = 0.0;
   toBack = 0.0;
+  front = vec4(0.0);
   if (any(lessThan(tc, vec2(0.0))) || any(greaterThan(tc, vec2(1.0))))
   {
     return false;
   }
   ivec2 texel = ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0));
-  vec4 front = texelFetch(rfFrontSurface, texel, 0);
+  front = texelFetch(rfFrontSurface, texel, 0);
   float back = texelFetch(rfBackSurface, texel, 0).a;
   float depth = -Q.z;
   float slack = 1e-4 * depth;
@@ -80,13 +81,12 @@ bool rfReflectedExit(vec3 P, vec3 T, float chord, out vec3 exitP, out vec3 exitN
   vec2 tc;
   float toFront;
   float toBack;
-  rfInsideAt(exitP, tc, toFront, toBack);
+  vec4 front;
+  rfInsideAt(exitP, tc, toFront, toBack, front);
   if (any(lessThan(tc, vec2(0.0))) || any(greaterThan(tc, vec2(1.0))))
   {
     return false;
   }
-  ivec2 texel = ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0));
-  vec4 front = texelFetch(rfFrontSurface, texel, 0);
   vec4 back = textureLod(rfBackSurface, tc, 0.0);
   bool haveFront = front.w > 0.5;
   bool haveBack = back.a > 0.0;
@@ -128,16 +128,17 @@ bool rfFollowInside(vec3 P, vec3 T, out vec3 exitP, out vec3 exitN)
   vec2 tc;
   float toFront;
   float toBack;
+  vec4 front;
   for (int i = 1; i <= 24; ++i)
   {
-    if (!rfInsideAt(P + (float(i) * dt) * T, tc, toFront, toBack))
+    if (!rfInsideAt(P + (float(i) * dt) * T, tc, toFront, toBack, front))
     {
       float lo = float(i - 1) * dt;
       float hi = float(i) * dt;
       for (int j = 0; j < 6; ++j)
       {
         float mid = 0.5 * (lo + hi);
-        if (rfInsideAt(P + mid * T, tc, toFront, toBack))
+        if (rfInsideAt(P + mid * T, tc, toFront, toBack, front))
         {
           lo = mid;
         }
@@ -148,9 +149,8 @@ bool rfFollowInside(vec3 P, vec3 T, out vec3 exitP, out vec3 exitN)
       }
       // The last inside point says which surface is near; none inside (the very first step
       // left): the start's own surfaces decide.
-      rfInsideAt(P + lo * T, tc, toFront, toBack);
-      ivec2 texel = ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0));
-      vec3 normal = toFront < toBack ? rf_oct_decode(texelFetch(rfFrontSurface, texel, 0).xy)
+      rfInsideAt(P + lo * T, tc, toFront, toBack, front);
+      vec3 normal = toFront < toBack ? rf_oct_decode(front.xy)
                                      : textureLod(rfBackSurface, tc, 0.0).xyz;
       exitP = P + (0.5 * (lo + hi)) * T;
       exitN = normal;

@@ -345,10 +345,13 @@ rfRay rfTraceRay(vec2 tc, vec3 N1, float depth, int material, int channel)
   else if (!tirIn && rfFindExit(P, V, N1, T1, etaIn, P2, N2))
   {
     tir = rfRefractWithPolicy(T1, -normalize(N2), ior, T2);
-#ifdef RF_TIR_BOUNCES
-    // Totally reflected: mirrored inside and followed to the next exit (rfMethodDIR.glsl).
+#if defined(RF_TIR_BOUNCES) || defined(RF_EXIT_REFLECTION)
+    // The direction inside and where its chord began, up to the exit the ray leaves through.
     vec3 inside = T1;
     vec3 chordStart = P;
+#endif
+#ifdef RF_TIR_BOUNCES
+    // Totally reflected: mirrored inside and followed to the next exit (rfMethodDIR.glsl).
     for (int bounce = 0; bounce < RF_TIR_BOUNCES && tir == 1; ++bounce)
     {
       vec3 mirrored = reflect(inside, normalize(N2));
@@ -372,14 +375,8 @@ rfRay rfTraceRay(vec2 tc, vec3 N1, float depth, int material, int channel)
     if (tir == 0)
     {
       vec3 outward = normalize(N2);
-#ifdef RF_TIR_BOUNCES
-      vec3 arriving = inside;
-#else
-      vec3 arriving = T1;
-      vec3 chordStart = P;
-#endif
-      branchWeight = rfk_fresnel_dielectric(dot(arriving, outward), ior);
-      vec3 mirrored = reflect(arriving, outward);
+      branchWeight = rfk_fresnel_dielectric(dot(inside, outward), ior);
+      vec3 mirrored = reflect(inside, outward);
       vec3 nextP;
       vec3 nextN;
       bool found = rfReflectedExit(P2, mirrored, length(P2 - chordStart), nextP, nextN);

@@ -108,6 +108,15 @@ struct Scene : rftest::ReferenceScene
     rftest::WithoutHighlights(this->Glass);
     this->Renderer->AddActor(this->Glass);
   }
+
+  // The built-in sky around the glass and a black background, which the reference's
+  // sub-samples that miss the glass take too: the cases held against the reference.
+  void UseSkyOverBlack()
+  {
+    this->Pass->SetEnvironmentModeToBuiltin();
+    this->Renderer->GradientBackgroundOff();
+    this->Renderer->SetBackground(0.0, 0.0, 0.0);
+  }
 };
 
 const unsigned char* Pixel(vtkImageData* image, int x, int y)
@@ -639,9 +648,7 @@ bool ComparePair(vtkImageData* first, vtkImageData* second, vtkDataArray* colour
 int AntiAliasing()
 {
   Scene scene(1.5);
-  scene.Pass->SetEnvironmentModeToBuiltin();
-  scene.Renderer->GradientBackgroundOff();
-  scene.Renderer->SetBackground(0.0, 0.0, 0.0);
+  scene.UseSkyOverBlack();
   scene.Pass->FilteredLookupsOff();
   auto pointLookups = scene.Render();
   scene.Pass->FilteredLookupsOn();
@@ -788,9 +795,7 @@ int Dispersion()
 int TIRFollowed()
 {
   Scene scene(1.6);
-  scene.Pass->SetEnvironmentModeToBuiltin();
-  scene.Renderer->GradientBackgroundOff();
-  scene.Renderer->SetBackground(0.0, 0.0, 0.0);
+  scene.UseSkyOverBlack();
   auto glass = rftest::ActorFor(rftest::TIRCube()->GetOutputPort());
   glass->RotateX(35.0);
   glass->RotateY(40.0);
@@ -832,9 +837,7 @@ int TIRFollowed()
 int ExitReflection()
 {
   Scene scene(1.5);
-  scene.Pass->SetEnvironmentModeToBuiltin();
-  scene.Renderer->GradientBackgroundOff();
-  scene.Renderer->SetBackground(0.0, 0.0, 0.0);
+  scene.UseSkyOverBlack();
   auto dropped = scene.Render();
   scene.Pass->ExitReflectionOn();
   auto followed = scene.Render();

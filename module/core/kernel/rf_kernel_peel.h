@@ -261,7 +261,8 @@ RF_KERNEL rf_float rfk_peel_medium_ior(rf_material_table materials, int stack)
 
 /* A ray being followed through the layers: where it is, where it goes, the medium stack, its
  * side of the layers, the total internal reflections it took, the length it travelled inside
- * glass and whether a reflection past the bounces ended it. */
+ * glass, the length of the segment that brought it to P and whether a reflection past the
+ * bounces ended it. */
 RF_STRUCT_BEGIN(rfk_peel_ray)
   rf_float3 P;
   rf_float3 T;
@@ -270,6 +271,7 @@ RF_STRUCT_BEGIN(rfk_peel_ray)
   int layer; /* the layer P lies on */
   int reflected;
   rf_float travelled;
+  rf_float chord;
   rf_bool ended;
 };
 
@@ -284,6 +286,7 @@ RF_KERNEL rfk_peel_ray rfk_peel_entered(rf_float3 P1, rf_float3 T1, int material
   ray.layer = 0;
   ray.reflected = 0;
   ray.travelled = 0.0;
+  ray.chord = 0.0;
   ray.ended = RF_FALSE;
   return ray;
 }
@@ -322,9 +325,10 @@ RF_KERNEL void rfk_peel_follow(rf_layer_stack layers, int count, rf_material_tab
       rfk_peel_normal(layers, tc, camera.viewportSize, hitLayer, texel, faultSize);
     rf_float3 outward = texel.w < 0.0 ? rf_neg3(towardViewer) : towardViewer;
     int crossed = rf_int_of(rf_abs(texel.w) + 0.5) - 1;
+    r.chord = rf_length3(rf_sub3(Q, r.P));
     if (rfk_peel_stack_top(r.stack) >= 0)
     {
-      r.travelled = r.travelled + rf_length3(rf_sub3(Q, r.P));
+      r.travelled = r.travelled + r.chord;
     }
     r.P = Q;
     r.layer = hitLayer;

@@ -58,7 +58,7 @@ bool rfInsideAt(vec3 Q, out vec2 tc, out float toFront, out float toBack, out ve
   {
     return false;
   }
-  ivec2 texel = ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0));
+  ivec2 texel = rfTexelOf(tc);
   front = texelFetch(rfFrontSurface, texel, 0);
   float back = texelFetch(rfBackSurface, texel, 0).a;
   float depth = -Q.z;
@@ -95,12 +95,7 @@ bool rfReflectedExit(vec3 P, vec3 T, float chord, out vec3 exitP, out vec3 exitN
     return false;
   }
   bool throughFront = haveFront && (!haveBack || abs(toFront) < abs(toBack));
-  // How much deeper than that surface the point lies; along T the depth -z changes by -T.z.
-  float pastSurface = throughFront ? toFront : -toBack;
-  if (abs(T.z) > 1e-3)
-  {
-    exitP += clamp(pastSurface / T.z, -chord, chord) * T;
-  }
+  exitP = rfStepOntoSurface(exitP, T, throughFront ? toFront : -toBack, chord);
   exitN = throughFront ? rf_oct_decode(front.xy) : back.xyz;
   return dot(exitN, exitN) > 0.0;
 }

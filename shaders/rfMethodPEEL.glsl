@@ -149,13 +149,22 @@ bool rfPeelReflectedExit(rfk_peel_ray branch, int channel, out vec3 exitP, out v
   {
     return false;
   }
-  ivec2 texel = ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0));
+  ivec2 texel = rfTexelOf(tc);
   float depth = -exitP.z;
   int nearest = -1;
   float nearestGap = 0.0;
+  // The packed depths read once for all the layers (unused channels hold 0).
+  vec4 depthsA = texelFetch(rfPeelDepthsA, texel, 0);
+#if RF_PEEL_LAYERS > 4
+  vec4 depthsB = texelFetch(rfPeelDepthsB, texel, 0);
+#endif
   for (int layer = 0; layer < RF_PEEL_LAYERS; ++layer)
   {
-    float layerDepth = rfPeelLayerDepth(texel, layer);
+#if RF_PEEL_LAYERS > 4
+    float layerDepth = layer < 4 ? depthsA[layer & 3] : depthsB[layer & 3];
+#else
+    float layerDepth = depthsA[layer & 3];
+#endif
     if (layerDepth > 0.0 && (nearest < 0 || abs(layerDepth - depth) < nearestGap))
     {
       nearest = layer;
@@ -167,11 +176,7 @@ bool rfPeelReflectedExit(rfk_peel_ray branch, int channel, out vec3 exitP, out v
     return false;
   }
   vec4 surface = rfPeelLayerTexel(texel, nearest);
-  // How much deeper than that layer the point lies; along T the depth -z changes by -T.z.
-  if (abs(branch.T.z) > 1e-3)
-  {
-    exitP += clamp((depth - surface.z) / branch.T.z, -branch.chord, branch.chord) * branch.T;
-  }
+  exitP = rfStepOntoSurface(exitP, branch.T, depth - surface.z, branch.chord);
   vec3 towardViewer = rf_oct_decode(surface.xy);
   vec3 outward = surface.w < 0.0 ? -towardViewer : towardViewer;
   // The branch is inside its glass: it leaves through whatever surface it meets.

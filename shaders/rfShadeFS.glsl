@@ -93,7 +93,7 @@ vec2 rfSceneSample(vec4 clipP, vec4 clipT, float t, out float windowDepth)
 // The window depth of the opaque scene captured at a texture coordinate (1: background).
 float rfSceneWindowDepth(vec2 tc)
 {
-  return texelFetch(rfSceneDepth, ivec2(min(tc * rfViewport.zw, rfViewport.zw - 1.0)), 0).r;
+  return texelFetch(rfSceneDepth, rfTexelOf(tc), 0).r;
 }
 
 // Nearby opaque geometry (Wyman 2005, seed 001, section 4): where the ray leaving the glass,

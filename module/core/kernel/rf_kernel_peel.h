@@ -58,10 +58,10 @@
 #define RF_PEEL_SURFACE 1 /* a crossing of a layer */
 #define RF_PEEL_EDGE 2    /* inside the glass, the ray left its footprint on screen */
 
-/* The texture coordinates of P inside the image and in front of the camera; false outside. */
-RF_KERNEL rf_bool rfk_peel_on_image(rfk_camera camera, rf_float3 P, RF_OUT(rf_float2) tc)
+/* The texture coordinates of a point given in clip coordinates, inside the image and in
+ * front of the camera; false outside. */
+RF_KERNEL rf_bool rfk_peel_clip_on_image(rf_float4 clip, RF_OUT(rf_float2) tc)
 {
-  rf_float4 clip = rfk_clip_of(camera, P);
   RF_DEREF(tc) = rf_make2(0.0, 0.0);
   if (!(clip.w > 0.0))
   {
@@ -70,6 +70,12 @@ RF_KERNEL rf_bool rfk_peel_on_image(rfk_camera camera, rf_float3 P, RF_OUT(rf_fl
   rf_float2 t = rfk_texture_of_clip(clip);
   RF_DEREF(tc) = t;
   return t.x >= 0.0 && t.y >= 0.0 && t.x <= 1.0 && t.y <= 1.0;
+}
+
+/* The texture coordinates of P inside the image and in front of the camera; false outside. */
+RF_KERNEL rf_bool rfk_peel_on_image(rfk_camera camera, rf_float3 P, RF_OUT(rf_float2) tc)
+{
+  return rfk_peel_clip_on_image(rfk_clip_of(camera, P), tc);
 }
 
 /* A ray P + t T in clip coordinates, which are linear in t (the projection is linear in
@@ -101,12 +107,8 @@ RF_KERNEL int rfk_peel_side_at(rf_layer_stack layers, int count, rf_float2 viewp
 {
   rf_float4 clip = rf_make4(ray.clipP.x + t * ray.clipT.x, ray.clipP.y + t * ray.clipT.y,
     ray.clipP.z + t * ray.clipT.z, ray.clipP.w + t * ray.clipT.w);
-  if (!(clip.w > 0.0))
-  {
-    return -1;
-  }
-  rf_float2 tc = rfk_texture_of_clip(clip);
-  if (!(tc.x >= 0.0 && tc.y >= 0.0 && tc.x <= 1.0 && tc.y <= 1.0))
+  rf_float2 tc;
+  if (!rfk_peel_clip_on_image(clip, RF_ADDR(tc)))
   {
     return -1;
   }

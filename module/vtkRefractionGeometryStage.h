@@ -65,12 +65,15 @@ public:
   /// The back capture (BACK_SURFACE, BACK_Z).
   void DrawBack(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets);
   /// PEEL's layer `layer` (1..7: PEEL_1..PEEL_7), peeled behind the layer before it (layer
-  /// 0 is FRONT_SURFACE, drawn first). Returns whether any fragment of the glass was kept (an
-  /// occlusion query, read at once): an empty layer leaves nothing for the ones behind it.
+  /// 0 is FRONT_SURFACE, drawn first) of `layers` (K): the nearest surface behind it, except
+  /// with K = 2, where the one layer behind the front is the furthest surface, as DIR's back
+  /// capture (the two-interface model: the ray leaves where the glass ends, not at the next
+  /// surface of a glass holding more). Returns whether any fragment of the glass was kept
+  /// (an occlusion query, read at once): an empty layer leaves nothing for the ones behind it.
   /// With `askWhetherEmpty` false no query is made (true is returned): across MPI ranks every
   /// layer is drawn anyway, and the read would wait for each layer for nothing.
-  bool DrawPeel(
-    vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layer, bool askWhetherEmpty = true);
+  bool DrawPeel(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layer, int layers,
+    bool askWhetherEmpty = true);
   /// SSP's refraction mask into the alpha of the framebuffer bound now.
   void DrawMask(vtkOpenGLRenderer* ren);
   /// The glass props into the framebuffer bound now (the renderer's viewport) for `stage`,

@@ -489,7 +489,7 @@ void vtkRefractionPass::RenderGlass(
       vtkRefractionDepthRange::ComputeBounds(ren, glass, this->BoundsDepthRange);
       for (int layer = 1; layer < peelLayers; ++layer)
       {
-        if (!this->GeometryStage->DrawPeel(ren, this->Targets, layer))
+        if (!this->GeometryStage->DrawPeel(ren, this->Targets, layer, peelLayers))
         {
           // Nothing behind this layer's (empty) texels either: the layers from here on are
           // left as they are, and the packing and the shading read them as empty.

@@ -29,7 +29,7 @@ bool vtkRefractionPass::CompositeAcrossRanks(vtkOpenGLRenderer* ren,
     this->StageTimers->Start(TIMED_BACK_CAPTURE);
     for (int layer = 1; layer < peelLayers; ++layer)
     {
-      this->GeometryStage->DrawPeel(ren, this->Targets, layer, false);
+      this->GeometryStage->DrawPeel(ren, this->Targets, layer, peelLayers, false);
     }
     this->StageTimers->Stop(TIMED_BACK_CAPTURE);
   }

@@ -199,7 +199,7 @@ bool rfPeelReflectedExit(rfk_peel_ray branch, int channel, out vec3 exitP, out v
 int rfPeelTrace(vec3 P1, vec3 T1, int material, int channel, bool split, out vec3 P2,
   out vec3 T2, out float insideLength, out vec3 branchP, out vec3 branchT, out float branchWeight)
 {
-  int interfaces = RF_PEEL_LAYERS - 1 + RF_PEEL_BOUNCES;
+  int interfaces = rfk_peel_interfaces(RF_PEEL_LAYERS, RF_PEEL_BOUNCES);
   rfk_peel_ray ray = rfk_peel_entered(P1, T1, material);
   rfk_peel_ray branch;
   rfk_peel_follow(0, RF_PEEL_LAYERS, channel, rfCamera(), ray, interfaces, RF_PEEL_BOUNCES,

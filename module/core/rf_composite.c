@@ -92,38 +92,53 @@ rf_status rf_composite_layers(size_t count, int layers, float* kept, const float
   }
   for (i = 0; i < count; ++i)
   {
-    float merged[8][4];
+    float merged[16][4];
     float own[8][4];
     int a = 0;
     int b = 0;
-    int out;
+    int total = 0;
     int l;
     for (l = 0; l < layers; ++l)
     {
       memcpy(own[l], kept + (size_t)l * plane + i * 4, sizeof own[l]);
     }
-    for (out = 0; out < layers; ++out)
+    for (;;)
     {
       const int haveA = a < layers && layer_present(own[a]);
       const float* fromB = incoming + (size_t)b * plane + i * 4;
       const int haveB = b < layers && layer_present(fromB);
       if (haveA && (!haveB || own[a][2] <= fromB[2]))
       {
-        memcpy(merged[out], own[a++], sizeof merged[out]);
+        memcpy(merged[total++], own[a++], sizeof merged[0]);
       }
       else if (haveB)
       {
-        memcpy(merged[out], fromB, sizeof merged[out]);
+        memcpy(merged[total++], fromB, sizeof merged[0]);
         ++b;
       }
       else
       {
-        memset(merged[out], 0, sizeof merged[out]);
+        break;
       }
     }
+    /* Two layers are the front and the furthest surface behind it (as
+     * vtkRefractionGeometryStage::DrawPeel captures them): the union's furthest is one side's
+     * last, so the merge is exact; more layers are the nearest. */
+    if (layers == 2 && total > layers)
+    {
+      memcpy(merged[1], merged[total - 1], sizeof merged[0]);
+    }
+    total = total < layers ? total : layers;
     for (l = 0; l < layers; ++l)
     {
-      memcpy(kept + (size_t)l * plane + i * 4, merged[l], sizeof merged[l]);
+      if (l < total)
+      {
+        memcpy(kept + (size_t)l * plane + i * 4, merged[l], sizeof merged[l]);
+      }
+      else
+      {
+        memset(kept + (size_t)l * plane + i * 4, 0, sizeof merged[l]);
+      }
     }
   }
   return RF_OK;

@@ -107,3 +107,8 @@ rf_status rf_peel_trace(const rf_peel_input* input, rf_layer_sampler sample, voi
   result->tir_ended = flags >= 16 ? 1 : 0;
   return RF_OK;
 }
+
+int rf_peel_interfaces(int layers, int bounces)
+{
+  return rfk_peel_interfaces(layers, bounces);
+}

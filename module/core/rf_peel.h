@@ -60,6 +60,9 @@ typedef struct rf_peel_result
 rf_status rf_peel_trace(const rf_peel_input* input, rf_layer_sampler sample, void* context,
   rf_peel_result* result);
 
+/* The interfaces the shader follows with `layers` (K) and `bounces` (rfk_peel_interfaces). */
+int rf_peel_interfaces(int layers, int bounces);
+
 #ifdef __cplusplus
 }
 #endif

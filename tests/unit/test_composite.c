@@ -74,6 +74,22 @@ static void test_layers(void)
   CHECK(kept[2] == 1.0f && kept[6] == 2.0f && kept[10] == 3.0f && kept[14] == 4.0f);
   CHECK(kept[7] == 1.0f && kept[15] == 2.0f); /* the incoming layers keep their material */
   {
+    /* Two layers are the front and the furthest surface: of 1 (furthest 6) and 2 (furthest
+     * 4), 1 and 6, as a capture of all four surfaces on one rank would hold. */
+    float two[8];
+    float other[8];
+    const float c[2] = { 1.0f, 6.0f };
+    const float d[2] = { 2.0f, 4.0f };
+    set_layers(two, 2, c, 2);
+    set_layers(other, 2, d, 2);
+    CHECK(rf_composite_layers(1, 2, two, other) == RF_OK);
+    CHECK(two[2] == 1.0f && two[6] == 6.0f && two[7] == 2.0f);
+    set_layers(two, 2, d, 2);
+    set_layers(other, 2, c, 2);
+    CHECK(rf_composite_layers(1, 2, two, other) == RF_OK);
+    CHECK(two[2] == 1.0f && two[6] == 6.0f && two[3] == 1.0f && two[7] == 2.0f);
+  }
+  {
     float few[8];
     float none[8];
     const float one[1] = { 5.0f };

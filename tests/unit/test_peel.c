@@ -29,6 +29,8 @@ typedef struct scene
   double ior[MAX_SPHERES];
   double projection[16];
   double inverse_focal; /* tan(fovy / 2) */
+  int layers; /* K of the capture: with 2 the second layer is the furthest surface, as the pass
+                 peels it (vtkRefractionGeometryStage::DrawPeel); otherwise the nearest */
 } scene;
 
 /* The scene's camera: a 30 degree perspective at the origin looking down -z. */
@@ -57,6 +59,7 @@ static void make_scene(scene* s, const sphere* spheres, int count, const double 
   int i;
   make_camera(s);
   s->count = count;
+  s->layers = 0;
   for (i = 0; i < count; ++i)
   {
     s->spheres[i] = spheres[i];
@@ -131,6 +134,10 @@ static void sample_layers(void* context, const double tc[2], int layer, double r
       t[j - 1] = tt;
       owner[j - 1] = oo;
     }
+  }
+  if (s->layers == 2 && layer == 1 && n > 2)
+  {
+    layer = n - 1;
   }
   if (layer < n)
   {
@@ -267,8 +274,10 @@ static comparison compare(const scene* s, int layers, int bounces, int minimum_h
 {
   static double errors[SIZE * SIZE];
   comparison result = { 0, 0, 0.0, 0 };
+  scene captured = *s;
   int x;
   int y;
+  captured.layers = layers;
   for (y = 0; y < SIZE; ++y)
   {
     for (x = 0; x < SIZE; ++x)
@@ -294,7 +303,7 @@ static comparison compare(const scene* s, int layers, int bounces, int minimum_h
       input.T1 = T1;
       input.material = material;
       input.layers = layers;
-      input.interfaces = layers - 1 + bounces;
+      input.interfaces = rf_peel_interfaces(layers, bounces);
       input.bounces = bounces;
       input.tir_clamp = 0;
       input.extent = 8.0;
@@ -310,7 +319,7 @@ static comparison compare(const scene* s, int layers, int bounces, int minimum_h
       input.ior = s->ior;
       input.sheet = NULL;
       input.materials = MAX_SPHERES;
-      if (rf_peel_trace(&input, sample_layers, (void*)s, &traced) != RF_OK)
+      if (rf_peel_trace(&input, sample_layers, &captured, &traced) != RF_OK)
       {
         ++result.failures;
         continue;

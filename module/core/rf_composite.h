@@ -47,7 +47,8 @@ rf_status rf_composite_copy(size_t count, size_t pixel_bytes, const unsigned cha
  * (-z_view, > 0) and ending at the first z of 0 (no surface). Each pixel's kept layers become
  * the `layers` nearest of both lists, in order, padded with zeros, except with two layers
  * (PEEL's capture then: the front and the furthest surface behind it) the nearest and the
- * furthest; on equal z the kept layer comes first. Errors: RF_ERR_NULL_ARGUMENT, RF_ERR_EMPTY_RANGE for layers outside 1..8. */
+ * furthest; on equal z the kept layer comes first. Errors: RF_ERR_NULL_ARGUMENT,
+ * RF_ERR_EMPTY_RANGE for layers outside 1..8. */
 rf_status rf_composite_layers(size_t count, int layers, float* kept, const float* incoming);
 
 /* The screen-space perturbation method's refraction mask (vtkRefractionGeometryStage::

@@ -20,6 +20,7 @@
 #include "vtkTextureObject.h"
 
 #include "rfShaders.h"
+#include "rf_peel.h"
 #include "vtk_glew.h"
 
 #include <algorithm>
@@ -297,14 +298,12 @@ bool vtkRefractionGeometryStage::DrawPeel(vtkOpenGLRenderer* ren, vtkRefractionT
   {
     glBeginQuery(GL_ANY_SAMPLES_PASSED, this->PeelQuery);
   }
-  // With two layers the furthest surface behind the front (the peeling test of
-  // rfGeometryFS.glsl, GL_GREATER as DIR's back capture): on glass of more than two surfaces
-  // the nearest one behind the front, an inner surface, sent the rays out into the
-  // environment from inside the glass (the isosurface 19.3 -> 20.0 dB, the nested contours
-  // 10.9 -> 11.7 against the 2 x 2 truth). From three layers on the nearest are kept: the last
-  // as the furthest cost the nested contours 0.1-0.4 dB with four (docs/benchmark.md).
-  // rf_composite_layers merges the ranks' layers by the same rule.
-  const bool furthest = layers == 2;
+  // The furthest surface behind the previous layer where rf_peel_last_is_furthest says so (the
+  // peeling test of rfGeometryFS.glsl, GL_GREATER as DIR's back capture): with two layers the
+  // nearest one behind the front, on glass of more than two surfaces an inner surface, sent
+  // the rays out into the environment from inside the glass (the isosurface 19.3 -> 20.0 dB,
+  // the nested contours 10.9 -> 11.7 against the 2 x 2 truth).
+  const bool furthest = layer == layers - 1 && rf_peel_last_is_furthest(layers);
   this->DrawIntoTargets(ren, targets, { vtkRefractionTargets::PEEL_1 + layer - 1 },
     vtkRefractionTargets::PEEL_Z, furthest ? 0.0 : 1.0, furthest ? GL_GREATER : GL_LESS,
     STAGE_PEEL);

@@ -1,6 +1,8 @@
 /* rf_composite.c: see rf_composite.h. */
 #include "rf_composite.h"
 
+#include "rf_peel.h"
+
 #include <math.h>
 #include <string.h>
 
@@ -121,12 +123,11 @@ rf_status rf_composite_layers(size_t count, int layers, float* kept, const float
         break;
       }
     }
-    /* Two layers are the front and the furthest surface behind it (as
-     * vtkRefractionGeometryStage::DrawPeel captures them): the union's furthest is one side's
-     * last, so the merge is exact; more layers are the nearest. */
-    if (layers == 2 && total > layers)
+    /* Where the last layer holds the furthest surface (rf_peel_last_is_furthest), the
+     * union's furthest is one side's last, so the merge is exact. */
+    if (rf_peel_last_is_furthest(layers) && total > layers)
     {
-      memcpy(merged[1], merged[total - 1], sizeof merged[0]);
+      memcpy(merged[layers - 1], merged[total - 1], sizeof merged[0]);
     }
     total = total < layers ? total : layers;
     for (l = 0; l < layers; ++l)

@@ -63,6 +63,12 @@ rf_status rf_peel_trace(const rf_peel_input* input, rf_layer_sampler sample, voi
 /* The interfaces the shader follows with `layers` (K) and `bounces` (rfk_peel_interfaces). */
 int rf_peel_interfaces(int layers, int bounces);
 
+/* Non-zero when the last of `layers` (K) peeled layers holds the furthest surface behind the
+ * others instead of the next nearest: with K = 2, the two-interface model's exit surface, as
+ * DIR's back capture holds it. The capture (vtkRefractionGeometryStage::DrawPeel) and the
+ * ranks' merge (rf_composite_layers) follow it. */
+int rf_peel_last_is_furthest(int layers);
+
 #ifdef __cplusplus
 }
 #endif

@@ -29,8 +29,8 @@ typedef struct scene
   double ior[MAX_SPHERES];
   double projection[16];
   double inverse_focal; /* tan(fovy / 2) */
-  int layers; /* K of the capture: with 2 the second layer is the furthest surface, as the pass
-                 peels it (vtkRefractionGeometryStage::DrawPeel); otherwise the nearest */
+  int layers; /* K of the capture: its last layer the furthest surface where
+                 rf_peel_last_is_furthest says so, as the pass peels it; otherwise the nearest */
 } scene;
 
 /* The scene's camera: a 30 degree perspective at the origin looking down -z. */
@@ -135,7 +135,7 @@ static void sample_layers(void* context, const double tc[2], int layer, double r
       owner[j - 1] = oo;
     }
   }
-  if (s->layers == 2 && layer == 1 && n > 2)
+  if (rf_peel_last_is_furthest(s->layers) && layer == s->layers - 1 && n > s->layers)
   {
     layer = n - 1;
   }

@@ -75,6 +75,9 @@ std::vector<Column> Columns(int stageCount)
   c.push_back({ "filtered_lookups",
     [](const Row& r) { return std::string(r.Config.PointLookups ? "0" : "1"); },
     [](Row& r, const std::string& v) { r.Config.PointLookups = v == "0"; } });
+  c.push_back({ "smooth_internal_reflections",
+    [](const Row& r) { return std::string(r.Config.Smooth ? "1" : "0"); },
+    [](Row& r, const std::string& v) { r.Config.Smooth = v == "1"; } });
   c.push_back({ "repeats", [](const Row& r) { return std::to_string(r.Repeats); },
     [](Row& r, const std::string& v) { r.Repeats = std::atoi(v.c_str()); } });
   number("cpu_ms", [](Row& r) -> double& { return r.CpuMs.Median; });
@@ -102,7 +105,8 @@ std::vector<Column> Columns(int stageCount)
   number("ref_full_ss_ms", [](Row& r) -> double& { return r.RefFullSSMs; });
   number("bytes_per_pixel", [](Row& r) -> double& { return r.BytesPerPixel; });
   const std::pair<const char*, Errors Row::*> references[] = { { "two", &Row::Two },
-    { "full", &Row::Full }, { "two_ss", &Row::TwoSS }, { "full_ss", &Row::FullSS } };
+    { "full", &Row::Full }, { "two_ss", &Row::TwoSS }, { "full_ss", &Row::FullSS },
+    { "one_ray_full_ss", &Row::OneRay } };
   for (const auto& ref : references)
   {
     const std::string suffix = ref.first;

@@ -203,6 +203,7 @@ void Measure(Row& row, const std::vector<float>& colour, const std::vector<float
   }
   rf_psnr(truth.TwoSS.Colour.data(), truth.FullSS.Colour.data(), n, 3, mask.data(),
     &row.PsnrModelFullSS);
+  row.OneRay = Compare(truth.Full.Colour, truth.FullSS, m, size);
   rf_error_stats angle{};
   if (rf_angular_error(t2.data(), two.T2.data(), n, mask.data(), &angle) == RF_OK)
   {

@@ -43,6 +43,11 @@ struct Row
   // The two-interface model's own error: its supersampled reference against the supersampled
   // full one, on the row's glass pixels (the floor a method of that model can reach).
   double PsnrModelFullSS = -1;
+  // The exact trace at one ray per pixel centre (the full reference) against the supersampled
+  // full one, on the row's glass pixels and their parts: what one sample a pixel costs,
+  // whatever the refraction does (a method that filters may read better; one that samples a
+  // pixel once and follows the path exactly reads this).
+  Errors OneRay;
   // Mean colour of the picture over the supersampled full reference's, on the glass pixels:
   // light lost or gained (1 is as bright as the truth).
   double BrightnessFullSS = -1;

@@ -25,6 +25,10 @@ std::vector<Setting> PresetSettings(const Options& o)
     setting.Bounces = tirBounces;
     return setting;
   };
+  auto smoothed = [](Setting setting) {
+    setting.Smooth = true;
+    return setting;
+  };
   if (o.Quick)
   {
     settings.push_back({ "DIR", 5 });
@@ -43,10 +47,13 @@ std::vector<Setting> PresetSettings(const Options& o)
     settings.push_back(bounces);
     settings.push_back(exitReflection);
     settings.push_back(bouncesAndExit);
+    settings.push_back(smoothed({ "DIR", 5 }));
+    settings.push_back(smoothed(bouncesAndExit));
     settings.push_back({ "SIR", 0 });
     for (int layers : { 2, 4, 8 })
       settings.push_back(peel(layers, 0));
     settings.push_back(peel(4, 2));
+    settings.push_back(smoothed(peel(4, 2)));
     settings.push_back({ "SH", 0 });
     return settings;
   }
@@ -74,11 +81,14 @@ std::vector<Setting> PresetSettings(const Options& o)
   settings.push_back(bounces);
   settings.push_back(exitReflection);
   settings.push_back(bouncesAndExit);
+  settings.push_back(smoothed({ "DIR", 5 }));
+  settings.push_back(smoothed(bouncesAndExit));
   settings.push_back({ "ISR", 0 });
   settings.push_back({ "SSP", 0 });
   for (int layers : { 2, 4, 8 })
     for (int tirBounces : { 0, 2, 4 })
       settings.push_back(peel(layers, tirBounces));
+  settings.push_back(smoothed(peel(4, 2)));
   settings.push_back({ "SH", 0 });
   return settings;
 }
@@ -138,5 +148,6 @@ void Apply(vtkRefractionPass* pass, const Setting& setting)
   pass->SetExitReflection(setting.ExitReflection);
   pass->SetPeelLayers(std::max(setting.Layers, 2));
   pass->SetFilteredLookups(!setting.PointLookups);
+  pass->SetSmoothInternalReflections(setting.Smooth);
 }
 }

@@ -28,6 +28,7 @@ struct Setting
   bool ExitReflection = false; // SetExitReflection: the exit's reflected share followed
   int Layers = 0;            // PEEL: SetPeelLayers (K)
   bool PointLookups = false; // SetFilteredLookups(false): one direction per ray
+  bool Smooth = false;       // SetSmoothInternalReflections(true)
   std::string Label() const
   {
     std::ostringstream s;
@@ -47,7 +48,7 @@ struct Setting
     {
       s << " TIR " << Bounces;
     }
-    s << (ExitReflection ? " exit" : "");
+    s << (ExitReflection ? " exit" : "") << (Smooth ? " smooth" : "");
     return s.str();
   }
 };

@@ -215,6 +215,8 @@ int rfViewerParseOptions(int argc, char* argv[], const std::vector<std::string>&
       "Anti-alias the glass: the refraction shaded at the pixels' corners, each pixel the average of its four (vtkRefractionPass::SetAntiAliasing; about 1.1-1.5 times the frame time)." },
     { "--exit-reflection", nullptr, nullptr, &o.ExitReflection,
       "DIR: follow the light the glass's far side reflects back inside to where it leaves (vtkRefractionPass::SetExitReflection; closer to a ray-traced picture, about 1.05-1.1 times the frame time)." },
+    { "--smooth-internal-reflections", nullptr, nullptr, &o.SmoothInternalReflections,
+      "Where a ray was totally reflected inside the glass, show the pixel's neighbourhood averaged instead of its one ray's colour, which there is noise (vtkRefractionPass::SetSmoothInternalReflections; not with --anti-aliasing)." },
     { "--size", "N|WxH", &o.Size, nullptr,
       "Window or image size in pixels: N or WxH, 1 to 8192 (default 512)." },
     { "--frames", "N", &o.Frames, nullptr,

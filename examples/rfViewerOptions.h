@@ -41,6 +41,7 @@ struct rfViewerOptions
   bool NoText = false;
   bool AntiAliasing = false;
   bool ExitReflection = false;
+  bool SmoothInternalReflections = false;
   bool Masks = false;
   bool Help = false;
   bool EGL = false; // accepted for older scripts: headless rendering always tries EGL first

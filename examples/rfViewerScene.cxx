@@ -387,6 +387,7 @@ int BuildScene(const rfViewerOptions& o, const rfViewerSettings& s, Scene& scene
   scene.Pass->SetPeelLayers(s.Layers);
   scene.Pass->SetAntiAliasing(o.AntiAliasing);
   scene.Pass->SetExitReflection(o.ExitReflection);
+  scene.Pass->SetSmoothInternalReflections(o.SmoothInternalReflections);
   scene.Renderer->SetPass(scene.Pass);
 
   scene.Text = vtkSmartPointer<vtkTextActor>::New();
@@ -418,6 +419,10 @@ void SetStatus(Scene& scene, double milliseconds, int timeIndex)
   if (scene.Pass->GetExitReflection() && scene.Pass->GetMethod() == vtkRefractionPass::DIR)
   {
     line << "  exit reflection";
+  }
+  if (scene.Pass->GetSmoothInternalReflections() && !scene.Pass->GetAntiAliasing())
+  {
+    line << "  smooth TIR";
   }
   line.precision(1);
   line << "  " << milliseconds << " ms";

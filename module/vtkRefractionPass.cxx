@@ -107,6 +107,7 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "TIRBounces: " << this->TIRBounces << "\n";
   os << indent << "ExitReflection: " << this->ExitReflection << "\n";
+  os << indent << "SmoothInternalReflections: " << this->SmoothInternalReflections << "\n";
   os << indent << "PeelLayers: " << this->PeelLayers << "\n";
   os << indent << "PeelLayersFound: " << this->PeelLayersFound << "\n";
   os << indent << "SHSmoothing: " << this->SHSmoothing << "\n";
@@ -377,6 +378,7 @@ void vtkRefractionPass::RenderGlass(
     this->EnvironmentMode == ENVIRONMENT_RENDERER, sceneRefraction,
     this->MultiSampleSilhouette && !exchange,
     this->Materials, this->Lights, this->BoundsDepthRange);
+  frame.SmoothInternalReflections = this->SmoothInternalReflections && !this->AntiAliasing;
   // Where the glass can be on screen: the shading and the composite run there only. Across
   // ranks rank 0 shades every rank's glass, which its own props do not bound.
   frame.GlassRectangle[2] = this->Width;
@@ -420,6 +422,7 @@ void vtkRefractionPass::RenderGlass(
   this->GeometryStage->SetSheetPieceMaterials(this->Materials->GetSheetPieceMaterial());
   this->GeometryStage->SetSignedFront(exchange && peelLayers > 1);
   this->GeometryStage->SetSampleComposite(frame.SampleComposite);
+  this->GeometryStage->SetSmoothInternalReflections(frame.SmoothInternalReflections);
   this->GeometryStage->SetSeparateCompositeProgram(
     this->CompositeProgram == COMPOSITE_PROGRAM_SEPARATE ||
     (this->CompositeProgram == COMPOSITE_PROGRAM_AUTO && frame.SampleComposite &&

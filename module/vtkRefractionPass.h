@@ -286,6 +286,22 @@ public:
 
   ///@{
   /**
+   * Smooth the pixels where the refracted ray was totally reflected inside the glass (off by
+   * default; every method that finds an exit: DIR, ISR, PEEL). Through such a pixel the rays
+   * leave along paths of their own (another wall, another bounce), so the one ray the pixel
+   * traces is a poor estimate of the light it averages; with this on, each glass pixel within
+   * one pixel of such a pixel shows the tent-weighted mean (1-2-1) of the glass in its 3 x 3
+   * neighbourhood instead. Beyond the papers; shaders/rfReflectedFilter.glsl. Not with
+   * SetAntiAliasing, whose four corners average a pixel already. Measured on the benchmark's
+   * meshes in docs/benchmark.md.
+   */
+  vtkSetMacro(SmoothInternalReflections, bool);
+  vtkGetMacro(SmoothInternalReflections, bool);
+  vtkBooleanMacro(SmoothInternalReflections, bool);
+  ///@}
+
+  ///@{
+  /**
    * SH: the width (in bands) of the semi-Gaussian low-pass filter on the SH weights of
    * Genevaux et al. (section 4.3), exp(-l^2 / (2 width^2)) on band l, against the ringing of
    * the truncated series; 0 turns it off. Default 5: on a ball at order 8 the exit direction's
@@ -573,6 +589,7 @@ protected:
   int TIRPolicy = TIR_CLAMP;
   int TIRBounces = 0;
   bool ExitReflection = false;
+  bool SmoothInternalReflections = false;
   int PeelLayers = 4;
   int PeelLayersFound = 0;
   double SHSmoothing = 5.0;

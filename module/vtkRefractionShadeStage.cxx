@@ -85,6 +85,8 @@ void vtkRefractionShadeStage::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Composite program: " << (this->CompositeQuad ? "built" : "none") << "\n";
   os << indent << "Anti-aliasing composite program: "
      << (this->CornerCompositeQuad ? "built" : "none") << "\n";
+  os << indent << "Composite program smoothing internal reflections: "
+     << (this->SmoothCompositeQuad ? "built" : "none") << "\n";
   os << indent << "Corner depth program: " << (this->CornerDepthQuad ? "built" : "none") << "\n";
 }
 
@@ -156,6 +158,10 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
   {
     defines << "#define RF_DEBUG_OUTPUT\n";
   }
+  else if (frame.SmoothInternalReflections)
+  {
+    defines << "#define RF_SMOOTH_INTERNAL_REFLECTIONS\n";
+  }
   // The defines name the method and every variant, so they are the program's key: the source
   // (the kernel and the stage, tens of kilobytes) is put together only when they change, not
   // every frame.
@@ -169,6 +175,7 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
   vtkShaderProgram::Substitute(
     source, "//RF::Common", std::string(rfKernelSource) + rfCommonSource);
   vtkShaderProgram::Substitute(source, "//RF::Environment", rfEnvironmentSource);
+  vtkShaderProgram::Substitute(source, "//RF::ReflectedFilter", rfReflectedFilterSource);
   vtkShaderProgram::Substitute(source, "//RF::Method", method->GetShaderSource());
   // VTK's shader cache finds a program it built before by its source.
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
@@ -357,11 +364,13 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglEnable(GL_DEPTH_TEST);
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    if (frame.SampleComposite)
+    if (frame.SampleComposite || frame.SmoothInternalReflections)
     {
       // The composite at the window's samples fills the silhouette from the glass colour's
-      // mipmaps (vtkRefractionSampleComposite): texels without glass must hold 0, not what an
-      // earlier frame left there. The whole target: a mipmap block reaches past the rectangle.
+      // mipmaps (vtkRefractionSampleComposite), and the smoothing of internal reflections
+      // averages the glass around a pixel (rfReflectedFilter.glsl): texels without glass must
+      // hold 0, not what an earlier frame left there. The whole target: a mipmap block reaches
+      // past the rectangle.
       vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
       ostate->vtkglDisable(GL_SCISSOR_TEST);
       ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
@@ -382,7 +391,7 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
   fbo->RestorePreviousBindingsAndBuffers();
   if (!frame.SampleComposite)
   {
-    this->Composite(ren, targets, corners, frame.GlassRectangle);
+    this->Composite(ren, targets, corners, frame.SmoothInternalReflections, frame.GlassRectangle);
   }
 }
 
@@ -452,12 +461,13 @@ void vtkRefractionShadeStage::AddEnvironmentMipmaps(vtkOpenGLTexture* cube)
 
 //------------------------------------------------------------------------------
 void vtkRefractionShadeStage::Composite(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets,
-  bool corners, const int rectangle[4])
+  bool corners, bool smooth, const int rectangle[4])
 {
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   vtkOpenGLState* ostate = renWin->GetState();
-  std::unique_ptr<vtkOpenGLQuadHelper>& quad =
-    corners ? this->CornerCompositeQuad : this->CompositeQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad = corners ? this->CornerCompositeQuad
+    : smooth                                           ? this->SmoothCompositeQuad
+                                                       : this->CompositeQuad;
   if (!quad)
   {
     std::string source = rfCompositeFSSource;
@@ -466,6 +476,12 @@ void vtkRefractionShadeStage::Composite(vtkOpenGLRenderer* ren, vtkRefractionTar
       vtkShaderProgram::Substitute(
         source, "in vec2 texCoord;", "in vec2 texCoord;\n#define RF_CORNER_SAMPLES\n");
     }
+    else if (smooth)
+    {
+      vtkShaderProgram::Substitute(source, "in vec2 texCoord;",
+        "in vec2 texCoord;\n#define RF_SMOOTH_INTERNAL_REFLECTIONS\n");
+    }
+    vtkShaderProgram::Substitute(source, "//RF::ReflectedFilter", rfReflectedFilterSource);
     quad.reset(new vtkOpenGLQuadHelper(renWin,
       vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str(), ""));
   }
@@ -633,7 +649,8 @@ void vtkRefractionShadeStage::ReleaseGraphicsResources(vtkWindow* w)
     program->reset();
   }
   for (std::unique_ptr<vtkOpenGLQuadHelper>* quad :
-    { &this->CompositeQuad, &this->CornerCompositeQuad, &this->CornerDepthQuad })
+    { &this->CompositeQuad, &this->CornerCompositeQuad, &this->SmoothCompositeQuad,
+      &this->CornerDepthQuad })
   {
     if (*quad)
     {

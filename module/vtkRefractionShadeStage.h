@@ -57,6 +57,9 @@ public:
     bool EnvironmentBackground = false;       // the renderer's background (no cube map)
     bool SceneRefraction = false;             // the captured scene is followed
     bool SampleComposite = false;             // the caller composites (at the samples)
+    // Pixels near one whose ray was totally reflected inside show their neighbourhood's glass
+    // (vtkRefractionPass::SetSmoothInternalReflections; not with anti-aliasing's corners).
+    bool SmoothInternalReflections = false;
     double AbsorptionDistance = 0.0;          // > 0: the data's colour tints the glass
     const std::vector<float>* RedIndex = nullptr;  // dispersion: red indices per material
     const std::vector<float>* BlueIndex = nullptr; // and blue ones (nullptr: no dispersion)
@@ -113,9 +116,11 @@ private:
     const std::vector<float>& materialSheet, bool debug);
 
   // The glass colour target into the framebuffer bound now, with the glass's depth; with
-  // anti-aliasing (corners) each pixel averages its four corners over the scene.
+  // anti-aliasing (corners) each pixel averages its four corners over the scene; with
+  // `smooth` (Frame::SmoothInternalReflections) the pixels near a marked one their
+  // neighbourhood's glass.
   void Composite(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, bool corners,
-    const int rectangle[4]);
+    bool smooth, const int rectangle[4]);
   // Anti-aliasing: into the depth buffer attached now, the nearest front depth of the four
   // pixels that meet at each corner (shaders/rfCornerDepthFS.glsl).
   void DrawCornerDepth(vtkOpenGLRenderer* ren, vtkTextureObject* frontDepth);
@@ -123,6 +128,7 @@ private:
   std::unique_ptr<Program> Debug;
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CornerCompositeQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> SmoothCompositeQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CornerDepthQuad;
 };
 

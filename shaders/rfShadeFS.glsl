@@ -9,8 +9,9 @@
 // Defines set by the pass: RF_METHOD_{SIR,DIR,ISR,SSP,PEEL,SH}, RF_TIR_CLAMP, RF_FRESNEL,
 // RF_ENV_CUBEMAP or RF_ENV_BACKGROUND (else the built-in environment), RF_SCENE_REFRACTION,
 // RF_SCENE_STEPS, RF_TINT, RF_DISPERSION, RF_MAX_MATERIALS, RF_DEBUG_OUTPUT, RF_CORNER_SAMPLES
-// (anti-aliasing: the pixels' corners instead of the pixels), RF_FILTERED_LOOKUPS and the
-// method's own.
+// (anti-aliasing: the pixels' corners instead of the pixels), RF_FILTERED_LOOKUPS,
+// RF_SMOOTH_INTERNAL_REFLECTIONS (rfReflectedFilter.glsl: the pixels whose ray was totally
+// reflected inside are marked in alpha) and the method's own.
 in vec2 texCoord;
 uniform sampler2D rfFrontSurface;
 #ifdef RF_TINT
@@ -45,6 +46,7 @@ ivec2 rfPixel;
 //RF::Common
 
 //RF::Environment
+//RF::ReflectedFilter
 
 // The view-space point of depth -z = depth seen through texture coordinate tc.
 vec3 rfPositionFromDepth(vec2 tc, float depth)
@@ -249,6 +251,7 @@ struct rfRay
   vec3 P2;
   vec3 T2;
   int tir;
+  bool reflectedInside; // totally reflected inside the glass at least once (rfReflectedFilter)
   vec2 tc;
   vec3 V;
   vec3 N1;
@@ -270,6 +273,7 @@ rfRay rfNoRay()
   ray.P2 = vec3(0.0);
   ray.T2 = vec3(0.0);
   ray.tir = 0;
+  ray.reflectedInside = false;
   ray.tc = vec2(0.0);
   ray.V = vec3(0.0);
   ray.N1 = vec3(0.0);
@@ -298,6 +302,7 @@ rfRay rfTraceRay(vec2 tc, vec3 N1, float depth, int material, int channel)
   vec3 T2 = tirIn ? reflect(V, N1) : T1;
   vec3 P2 = P;
   int tir = tirIn ? 2 : 0;
+  bool reflectedInside = false;
   vec3 N2;
 #if defined(RF_METHOD_PEEL) || defined(RF_METHOD_SH)
   float insideLength = 0.0;
@@ -340,11 +345,13 @@ rfRay rfTraceRay(vec2 tc, vec3 N1, float depth, int material, int channel)
     int bounces = rfPeelTrace(
       P, T1, material, channel, split, P2, T2, insideLength, branchP, branchT, branchWeight);
     tir = bounces >= 16 ? 1 : 0;
+    reflectedInside = bounces > 0;
   }
 #else
   else if (!tirIn && rfFindExit(P, V, N1, T1, etaIn, P2, N2))
   {
     tir = rfRefractWithPolicy(T1, -normalize(N2), ior, T2);
+    reflectedInside = tir == 1;
 #if defined(RF_TIR_BOUNCES) || defined(RF_EXIT_REFLECTION)
     // The direction inside and where its chord began, up to the exit the ray leaves through.
     vec3 inside = T1;
@@ -397,6 +404,7 @@ rfRay rfTraceRay(vec2 tc, vec3 N1, float depth, int material, int channel)
   ray.P2 = P2;
   ray.T2 = T2;
   ray.tir = tir;
+  ray.reflectedInside = reflectedInside;
   ray.tc = tc;
   ray.V = V;
   ray.N1 = N1;
@@ -488,9 +496,11 @@ float rfSpreadAcrossPixel(vec3 direction, float glass)
 // The colour of the glass at one surface point (glass false: none there, black): the rays
 // of its colour channels traced (with dispersion each channel follows the ray of its own
 // index; the green one is the ray of the debug output), how much each ray's directions
-// spread across the pixel, then the lookups over that width. Every pixel of the 2x2 block
-// must call it, glass or not (rfSpreadAcrossPixel).
-vec3 rfShadeColour(bool glass, vec2 tc, vec3 N1, float depth, int material)
+// spread across the pixel, then the lookups over that width; and whether the ray was totally
+// reflected inside the glass. Every pixel of the 2x2 block must call it, glass or not
+// (rfSpreadAcrossPixel).
+vec3 rfShadeColour(bool glass, vec2 tc, vec3 N1, float depth, int material,
+  out bool reflectedInside)
 {
   rfRay ray = rfNoRay();
 #ifdef RF_DISPERSION
@@ -505,6 +515,7 @@ vec3 rfShadeColour(bool glass, vec2 tc, vec3 N1, float depth, int material)
     blue = rfTraceRay(tc, N1, depth, material, 2);
 #endif
   }
+  reflectedInside = ray.reflectedInside;
   float defined = glass ? 1.0 : 0.0;
   float transmittedWidth = rfSpreadAcrossPixel(ray.T2, defined);
   float reflectedWidth = rfSpreadAcrossPixel(reflect(ray.V, ray.N1), defined);
@@ -573,8 +584,10 @@ vec4 rfCornerSample()
   }
   bool glass = count >= 2.0 && dot(normal, normal) > 0.0;
   int index = clamp(int(material) - 1, 0, RF_MAX_MATERIALS - 1);
+  bool reflectedInside;
   vec3 colour = rfShadeColour(glass, vec2(rfPixel) / rfViewport.zw,
-    glass ? normalize(normal) : vec3(0.0, 0.0, 1.0), glass ? depth / count : 0.0, index);
+    glass ? normalize(normal) : vec3(0.0, 0.0, 1.0), glass ? depth / count : 0.0, index,
+    reflectedInside);
   if (!glass)
   {
     return vec4(0.0);
@@ -606,7 +619,9 @@ void main()
   gl_FragData[0] = vec4(rfCentre.P2, length(rfCentre.P2 - rfCentre.P1));
   gl_FragData[1] = vec4(rfCentre.T2, 1.0 + float(rfCentre.tir));
 #else
-  vec3 rfColour = rfShadeColour(rfGlass, texCoord, rfN1, rfFront.z, rfMaterial);
+  bool rfReflectedInside;
+  vec3 rfColour =
+    rfShadeColour(rfGlass, texCoord, rfN1, rfFront.z, rfMaterial, rfReflectedInside);
   if (!rfGlass)
   {
     discard; // no glass here: only now, after the block's derivatives (rfShadeColour)
@@ -616,7 +631,12 @@ void main()
   vec4 rfDataColour = texelFetch(rfFrontColour, rfPixel, 0);
   rfColour = mix(rfColour, rfDataColour.rgb, rfDataColour.a);
 #endif
+#ifdef RF_SMOOTH_INTERNAL_REFLECTIONS
+  gl_FragData[0] =
+    vec4(rfKeptSample(rfColour), rfReflectedInside ? RF_REFLECTED_INSIDE_ALPHA : 1.0);
+#else
   gl_FragData[0] = vec4(rfKeptSample(rfColour), 1.0);
+#endif
 #endif
 #endif
 }

@@ -317,6 +317,9 @@ def case_properties(scene):
     reference = scene.picture("properties_ior_2.4")
     changes("GlassTIRBounces=2 (index 2.4)", lambda: setattr(view, "GlassTIRBounces", 2),
             lambda: setattr(view, "GlassTIRBounces", 0))
+    changes("GlassSmoothInternalReflections=1 (index 2.4)",
+            lambda: setattr(view, "GlassSmoothInternalReflections", 1),
+            lambda: setattr(view, "GlassSmoothInternalReflections", 0))
 
 
 def case_timeseries(scene):

@@ -170,7 +170,16 @@ int main()
         p->AntiAliasingOn();
       },
       true, true },
+    { "smooth internal reflections",
+      [](vtkRefractionPass* p) { p->SmoothInternalReflectionsOn(); }, true, true },
     { "PEEL (K = 4)", [](vtkRefractionPass* p) { p->SetMethod(vtkRefractionPass::PEEL); },
+      true, true },
+    { "PEEL, TIR followed twice, smooth internal reflections",
+      [](vtkRefractionPass* p) {
+        p->SetMethod(vtkRefractionPass::PEEL);
+        p->SetTIRBounces(2);
+        p->SmoothInternalReflectionsOn();
+      },
       true, true },
     { "PEEL K = 8, TIR followed twice, reflect policy",
       [](vtkRefractionPass* p) {

@@ -195,6 +195,8 @@ vtkGlassRenderViewSetting(AntiAliasing, int, SetAntiAliasing, GetAntiAliasing);
 vtkGlassRenderViewSetting(Layers, int, SetPeelLayers, GetPeelLayers);
 vtkGlassRenderViewSetting(TIRBounces, int, SetTIRBounces, GetTIRBounces);
 vtkGlassRenderViewSetting(ExitReflection, int, SetExitReflection, GetExitReflection);
+vtkGlassRenderViewSetting(SmoothInternalReflections, int, SetSmoothInternalReflections,
+  GetSmoothInternalReflections);
 
 int vtkGlassRenderView::GetNumberOfGlassProps()
 {

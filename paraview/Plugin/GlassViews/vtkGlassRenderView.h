@@ -51,7 +51,8 @@ public:
 
   ///@{
   /// The pass's settings (see vtkRefractionPass): EnvironmentMode, SceneRefraction,
-  /// DataColour, AbsorptionDistance, AntiAliasing, PeelLayers, TIRBounces and ExitReflection.
+  /// DataColour, AbsorptionDistance, AntiAliasing, PeelLayers, TIRBounces, ExitReflection and
+  /// SmoothInternalReflections.
   void SetGlassEnvironment(int mode);
   int GetGlassEnvironment();
   void SetGlassSceneRefraction(int on);
@@ -68,6 +69,8 @@ public:
   int GetGlassTIRBounces();
   void SetGlassExitReflection(int on);
   int GetGlassExitReflection();
+  void SetGlassSmoothInternalReflections(int on);
+  int GetGlassSmoothInternalReflections();
   ///@}
 
   /// Glass props the pass drew in the last render (for tests).

@@ -175,11 +175,9 @@ void vtkRefractionGeometryStage::DrawProps(vtkOpenGLRenderer* ren, int stage)
   // source, and VTK's shader cache hands back the program already compiled for it.
   const bool compositeProgram =
     this->SampleComposite && (!this->SeparateCompositeProgram || stage == STAGE_COMPOSITE);
-  const bool compositeSmooths = compositeProgram && this->SmoothInternalReflections;
-  if (compositeProgram != this->CompositeProgram || compositeSmooths != this->CompositeSmooths)
+  if (compositeProgram != this->CompositeProgram)
   {
     this->CompositeProgram = compositeProgram;
-    this->CompositeSmooths = compositeSmooths;
     this->DefinesTime.Modified();
   }
   this->Stage = stage;
@@ -425,7 +423,6 @@ bool vtkRefractionGeometryStage::PostReplaceShaderValues(std::string&, std::stri
   const std::string body = source.substr(marker + std::string(kImplMarker).size());
   vtkShaderProgram::Substitute(
     declarations, "//RF::Common", std::string(rfKernelSource) + rfCommonSource);
-  vtkShaderProgram::Substitute(declarations, "//RF::ReflectedFilter", rfReflectedFilterSource);
   // The mapper declares vertexVC only with lighting, and normalVCVSOutput only with normals
   // or lighting; otherwise rebuild them from the fragment's coordinates.
   const bool haveVertexVC = fragmentShader.find("vec4 vertexVC") != std::string::npos;
@@ -437,7 +434,6 @@ bool vtkRefractionGeometryStage::PostReplaceShaderValues(std::string&, std::stri
   const bool haveColour = fragmentShader.find("vec3 diffuseColor") != std::string::npos &&
     fragmentShader.find("vec3 ambientColor") != std::string::npos;
   defines << this->Defines << (this->CompositeProgram ? "#define RF_SAMPLE_COMPOSITE\n" : "")
-          << (this->CompositeSmooths ? "#define RF_SMOOTH_INTERNAL_REFLECTIONS\n" : "")
           << "#define RF_DATA_COLOUR "
           << (haveColour ? "vec4(ambientColor + diffuseColor, opacity)" : "vec4(1.0)")
           << "\n#define RF_EDGE_MIX "

@@ -106,9 +106,6 @@ public:
   /// composite's code compiled into the mapper's program (llvmpipe runs both sides of a
   /// branch, so it would cost every G-buffer draw its fetches). Takes effect at the next draw.
   void SetSampleComposite(bool sampleComposite) { this->SampleComposite = sampleComposite; }
-  /// Whether the composite smooths the pixels near one whose ray was totally reflected inside
-  /// (vtkRefractionPass::SetSmoothInternalReflections). Takes effect at the next draw.
-  void SetSmoothInternalReflections(bool smooth) { this->SmoothInternalReflections = smooth; }
   /// Whether the composite's code is compiled in only for the composite's draw (two programs
   /// a frame, a shader-source rebuild at each switch) instead of into every draw of a frame
   /// that draws it (vtkRefractionPass::SetCompositeProgram).
@@ -169,8 +166,6 @@ private:
   bool SampleComposite = false;
   bool SeparateCompositeProgram = false;
   bool CompositeProgram = false; ///< the mapper's program holds the composite (DrawProps)
-  bool SmoothInternalReflections = false;
-  bool CompositeSmooths = false; ///< the composite in the mapper's program smooths (DrawProps)
   vtkTextureObject* PeelPrevious = nullptr; ///< the layer the one being drawn peels behind
   unsigned int PeelQuery = 0;               ///< DrawPeel's occlusion query (0: none yet)
   bool Parallel = false;

@@ -370,6 +370,8 @@ void vtkRefractionPass::RenderGlass(
   const bool dataColour = agree(this->Materials->GetDataColour());
   wanted[vtkRefractionTargets::FRONT_COLOR] = dataColour;
   wanted[vtkRefractionTargets::GLASS_COLOR] = true; // the shading stage's output
+  wanted[vtkRefractionTargets::GLASS_COLOR_SHADED] =
+    this->SmoothInternalReflections && !this->AntiAliasing;
   wanted[vtkRefractionTargets::CORNER_Z] = this->AntiAliasing;
   wanted[vtkRefractionTargets::DEBUG_0] = this->DebugOutput;
   wanted[vtkRefractionTargets::DEBUG_1] = this->DebugOutput;
@@ -422,7 +424,6 @@ void vtkRefractionPass::RenderGlass(
   this->GeometryStage->SetSheetPieceMaterials(this->Materials->GetSheetPieceMaterial());
   this->GeometryStage->SetSignedFront(exchange && peelLayers > 1);
   this->GeometryStage->SetSampleComposite(frame.SampleComposite);
-  this->GeometryStage->SetSmoothInternalReflections(frame.SmoothInternalReflections);
   this->GeometryStage->SetSeparateCompositeProgram(
     this->CompositeProgram == COMPOSITE_PROGRAM_SEPARATE ||
     (this->CompositeProgram == COMPOSITE_PROGRAM_AUTO && frame.SampleComposite &&

@@ -85,8 +85,8 @@ void vtkRefractionShadeStage::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Composite program: " << (this->CompositeQuad ? "built" : "none") << "\n";
   os << indent << "Anti-aliasing composite program: "
      << (this->CornerCompositeQuad ? "built" : "none") << "\n";
-  os << indent << "Composite program smoothing internal reflections: "
-     << (this->SmoothCompositeQuad ? "built" : "none") << "\n";
+  os << indent << "Program smoothing internal reflections: "
+     << (this->SmoothQuad ? "built" : "none") << "\n";
   os << indent << "Corner depth program: " << (this->CornerDepthQuad ? "built" : "none") << "\n";
 }
 
@@ -339,10 +339,15 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
   // blocks without glass cost nothing. Pixels: the front capture's depth buffer. Corners
   // (anti-aliasing): a corner lies between four pixels and is shaded when any of them is
   // glass, so the corner depth buffer takes the nearest of the four first.
+  // Smoothing the pixels reflected inside: the shading goes into GLASS_COLOR_SHADED, and the
+  // smoothing draws the glass colour target from it (SmoothReflectedPixels).
+  vtkTextureObject* shaded = frame.SmoothInternalReflections && !corners
+    ? targets->Get(vtkRefractionTargets::GLASS_COLOR_SHADED)
+    : nullptr;
   vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
   fbo->SaveCurrentBindingsAndBuffers();
   fbo->Bind();
-  fbo->AddColorAttachment(0, glassColour);
+  fbo->AddColorAttachment(0, shaded ? shaded : glassColour);
   fbo->AddDepthAttachment(corners ? cornerDepth : frontDepth);
   fbo->ActivateDrawBuffers(1);
   {
@@ -364,18 +369,14 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglEnable(GL_DEPTH_TEST);
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    if (frame.SampleComposite || frame.SmoothInternalReflections)
+    if (frame.SampleComposite || shaded)
     {
       // The composite at the window's samples fills the silhouette from the glass colour's
       // mipmaps (vtkRefractionSampleComposite), and the smoothing of internal reflections
       // averages the glass around a pixel (rfReflectedFilter.glsl): texels without glass must
       // hold 0, not what an earlier frame left there. The whole target: a mipmap block reaches
-      // past the rectangle.
-      vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
-      ostate->vtkglDisable(GL_SCISSOR_TEST);
-      ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-      ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-      ostate->vtkglEnable(GL_SCISSOR_TEST);
+      // past the rectangle, and the smoothing reads a texel beyond it.
+      this->ClearColourTarget(ostate);
     }
     if (corners)
     {
@@ -385,14 +386,66 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
     ostate->vtkglDepthFunc(GL_GREATER);
     ostate->vtkglDepthMask(GL_FALSE);
     this->Draw(ren, method, settings, targets, frame, materialIOR, materialSheet, false);
+    if (shaded)
+    {
+      fbo->AddColorAttachment(0, glassColour);
+      fbo->ActivateDrawBuffers(1);
+      if (frame.SampleComposite)
+      {
+        this->ClearColourTarget(ostate);
+      }
+      this->SmoothReflectedPixels(ren, shaded);
+    }
   }
   fbo->RemoveDepthAttachment();
   fbo->UnBind();
   fbo->RestorePreviousBindingsAndBuffers();
   if (!frame.SampleComposite)
   {
-    this->Composite(ren, targets, corners, frame.SmoothInternalReflections, frame.GlassRectangle);
+    this->Composite(ren, targets, corners, frame.GlassRectangle);
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionShadeStage::ClearColourTarget(vtkOpenGLState* ostate)
+{
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  ostate->vtkglEnable(GL_SCISSOR_TEST);
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionShadeStage::SmoothReflectedPixels(
+  vtkOpenGLRenderer* ren, vtkTextureObject* shaded)
+{
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  if (!this->SmoothQuad)
+  {
+    std::string source = rfSmoothReflectedFSSource;
+    vtkShaderProgram::Substitute(source, "//RF::ReflectedFilter", rfReflectedFilterSource);
+    this->SmoothQuad.reset(
+      new vtkOpenGLQuadHelper(renWin, FarPlaneQuadVertexShader().c_str(), source.c_str(), ""));
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(this->SmoothQuad->Program);
+  }
+  vtkShaderProgram* program = this->SmoothQuad->Program;
+  if (!program || !program->GetCompiled())
+  {
+    vtkErrorMacro("Could not build the program smoothing internal reflections; the glass is "
+                  "not drawn.");
+    return;
+  }
+  shaded->Activate();
+  program->SetUniformi("rfShadedColour", shaded->GetTextureUnit());
+  const float size[2] = { static_cast<float>(shaded->GetWidth()),
+    static_cast<float>(shaded->GetHeight()) };
+  program->SetUniform2f("rfSize", size);
+  this->SmoothQuad->Render();
+  shaded->Deactivate();
 }
 
 //------------------------------------------------------------------------------
@@ -461,13 +514,12 @@ void vtkRefractionShadeStage::AddEnvironmentMipmaps(vtkOpenGLTexture* cube)
 
 //------------------------------------------------------------------------------
 void vtkRefractionShadeStage::Composite(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets,
-  bool corners, bool smooth, const int rectangle[4])
+  bool corners, const int rectangle[4])
 {
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   vtkOpenGLState* ostate = renWin->GetState();
-  std::unique_ptr<vtkOpenGLQuadHelper>& quad = corners ? this->CornerCompositeQuad
-    : smooth                                           ? this->SmoothCompositeQuad
-                                                       : this->CompositeQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad =
+    corners ? this->CornerCompositeQuad : this->CompositeQuad;
   if (!quad)
   {
     std::string source = rfCompositeFSSource;
@@ -476,12 +528,6 @@ void vtkRefractionShadeStage::Composite(vtkOpenGLRenderer* ren, vtkRefractionTar
       vtkShaderProgram::Substitute(
         source, "in vec2 texCoord;", "in vec2 texCoord;\n#define RF_CORNER_SAMPLES\n");
     }
-    else if (smooth)
-    {
-      vtkShaderProgram::Substitute(source, "in vec2 texCoord;",
-        "in vec2 texCoord;\n#define RF_SMOOTH_INTERNAL_REFLECTIONS\n");
-    }
-    vtkShaderProgram::Substitute(source, "//RF::ReflectedFilter", rfReflectedFilterSource);
     quad.reset(new vtkOpenGLQuadHelper(renWin,
       vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str(), ""));
   }
@@ -649,7 +695,7 @@ void vtkRefractionShadeStage::ReleaseGraphicsResources(vtkWindow* w)
     program->reset();
   }
   for (std::unique_ptr<vtkOpenGLQuadHelper>* quad :
-    { &this->CompositeQuad, &this->CornerCompositeQuad, &this->SmoothCompositeQuad,
+    { &this->CompositeQuad, &this->CornerCompositeQuad, &this->SmoothQuad,
       &this->CornerDepthQuad })
   {
     if (*quad)

@@ -25,6 +25,7 @@ class vtkImageData;
 class vtkMatrix4x4;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderer;
+class vtkOpenGLState;
 class vtkOpenGLTexture;
 class vtkRefractionLights;
 class vtkRefractionMethod;
@@ -116,11 +117,15 @@ private:
     const std::vector<float>& materialSheet, bool debug);
 
   // The glass colour target into the framebuffer bound now, with the glass's depth; with
-  // anti-aliasing (corners) each pixel averages its four corners over the scene; with
-  // `smooth` (Frame::SmoothInternalReflections) the pixels near a marked one their
-  // neighbourhood's glass.
+  // anti-aliasing (corners) each pixel averages its four corners over the scene.
   void Composite(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, bool corners,
-    bool smooth, const int rectangle[4]);
+    const int rectangle[4]);
+  // Frame::SmoothInternalReflections: into the colour attached now (the glass colour target,
+  // the front capture's depth test set), the shading's output `shaded` with the pixels near a
+  // marked one smoothed (shaders/rfSmoothReflectedFS.glsl).
+  void SmoothReflectedPixels(vtkOpenGLRenderer* ren, vtkTextureObject* shaded);
+  // Clears the whole colour attachment to 0 (scissor test on again after).
+  static void ClearColourTarget(vtkOpenGLState* ostate);
   // Anti-aliasing: into the depth buffer attached now, the nearest front depth of the four
   // pixels that meet at each corner (shaders/rfCornerDepthFS.glsl).
   void DrawCornerDepth(vtkOpenGLRenderer* ren, vtkTextureObject* frontDepth);
@@ -128,7 +133,7 @@ private:
   std::unique_ptr<Program> Debug;
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CornerCompositeQuad;
-  std::unique_ptr<vtkOpenGLQuadHelper> SmoothCompositeQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> SmoothQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CornerDepthQuad;
 };
 

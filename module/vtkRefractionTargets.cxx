@@ -35,6 +35,7 @@ const TargetFormat kFormats[vtkRefractionTargets::TARGET_COUNT] = {
   { "scene colour", 4, GL_RGBA8, GL_RGBA, vtkTextureObject::Nearest },
   { "scene depth", 0, 0, 0, vtkTextureObject::Nearest },
   { "glass colour", 4, GL_RGBA16F, GL_RGBA, vtkTextureObject::Nearest },
+  { "shaded glass colour", 4, GL_RGBA16F, GL_RGBA, vtkTextureObject::Nearest },
   { "corner z-buffer", 0, 0, 0, vtkTextureObject::Nearest },
   { "peeled layer 1", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "peeled layer 2", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },

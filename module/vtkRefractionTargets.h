@@ -43,6 +43,8 @@ public:
     GLASS_COLOR,       ///< RGBA16F: the shaded glass, which the composite puts into the scene:
                        ///< at each pixel, or with anti-aliasing at each pixel's lower-left
                        ///< corner (alpha 1 where the corner lies on the glass)
+    GLASS_COLOR_SHADED, ///< RGBA16F: GLASS_COLOR as the shading wrote it, which smoothing the
+                        ///< pixels reflected inside reads (SetSmoothInternalReflections)
     CORNER_Z,          ///< DEPTH32F: anti-aliasing, the nearest front depth of the four pixels
                        ///< that meet at each pixel's lower-left corner (1: no glass there)
     PEEL_1,            ///< RGBA32F: PEEL's depth-peeled layers 1 .. 7 (layer 0 is

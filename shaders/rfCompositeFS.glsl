@@ -9,15 +9,12 @@
 // With anti-aliasing (RF_CORNER_SAMPLES: texel (i, j) holds the lower-left corner of pixel
 // (i, j)) each pixel of the glass averages its four corners over the corners that lie on the
 // glass; that share is the alpha that blends it over the scene. A pixel whose centre is glass
-// but none of its corners (a sliver thinner than a pixel) shows the scene. With
-// RF_SMOOTH_INTERNAL_REFLECTIONS a pixel near one whose ray was totally reflected inside shows
-// its neighbourhood's glass (rfReflectedFilter.glsl).
+// but none of its corners (a sliver thinner than a pixel) shows the scene.
 in vec2 texCoord;
 uniform sampler2D rfFrontDepth;
 uniform sampler2D rfGlassColour;
 uniform vec2 rfSize;
 //VTK::Output::Dec
-//RF::ReflectedFilter
 void main()
 {
   ivec2 pixel = ivec2(texCoord * rfSize);
@@ -38,8 +35,6 @@ void main()
     discard;
   }
   vec4 colour = vec4(sum.rgb / sum.a, sum.a / 4.0);
-#elif defined(RF_SMOOTH_INTERNAL_REFLECTIONS)
-  vec4 colour = vec4(rfReflectedFilterColour(rfGlassColour, pixel, ivec2(rfSize) - 1), 1.0);
 #else
   vec4 colour = vec4(texelFetch(rfGlassColour, pixel, 0).rgb, 1.0);
 #endif

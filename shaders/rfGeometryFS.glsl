@@ -74,21 +74,13 @@ uniform int rfCompositeCorners;
 //RF::Common
 
 #ifdef RF_SAMPLE_COMPOSITE
-//RF::ReflectedFilter
-
-// The shaded glass at pixel p: its colour (with RF_SMOOTH_INTERNAL_REFLECTIONS, near a pixel
-// whose ray was totally reflected inside, its neighbourhood's: rfReflectedFilter.glsl), or with
-// corners the mean of those of its four corners that lie on the glass; alpha 0 where it has
-// none.
+// The shaded glass at pixel p: its colour, or with corners the mean of those of its four
+// corners that lie on the glass; alpha 0 where it has none.
 vec4 rfCompositeAt(ivec2 p, ivec2 last)
 {
   if (rfCompositeCorners == 0)
   {
-#ifdef RF_SMOOTH_INTERNAL_REFLECTIONS
-    return vec4(rfReflectedFilterColour(rfCompositeColour, p, last), 1.0);
-#else
     return vec4(texelFetch(rfCompositeColour, p, 0).rgb, 1.0);
-#endif
   }
   vec4 sum = texelFetch(rfCompositeColour, p, 0) +
     texelFetch(rfCompositeColour, min(p + ivec2(1, 0), last), 0) +

@@ -117,6 +117,17 @@ struct Scene : rftest::ReferenceScene
     this->Renderer->GradientBackgroundOff();
     this->Renderer->SetBackground(0.0, 0.0, 0.0);
   }
+
+  // The pass's debug image (exit points, directions, flags) of a frame of the scene as set now.
+  vtkSmartPointer<vtkImageData> RenderDebug()
+  {
+    this->Pass->DebugOutputOn();
+    this->Render();
+    auto debug = vtkSmartPointer<vtkImageData>::New();
+    debug->DeepCopy(this->Pass->GetDebugImage());
+    this->Pass->DebugOutputOff();
+    return debug;
+  }
 };
 
 const unsigned char* Pixel(vtkImageData* image, int x, int y)
@@ -504,11 +515,7 @@ int ReferenceNG(const std::string& outDir)
   scene.Renderer->AddActor(Axis(origin, zEnd, 0.0, 0.0, 1.0));
 
   auto picture = scene.Render();
-  scene.Pass->DebugOutputOn();
-  scene.Render();
-  vtkNew<vtkImageData> debug;
-  debug->DeepCopy(scene.Pass->GetDebugImage());
-  scene.Pass->DebugOutputOff();
+  vtkSmartPointer<vtkImageData> debug = scene.RenderDebug();
 
   vtkNew<vtkRefractionReference> reference;
   reference->SetMode(vtkRefractionReference::TWO_INTERFACE);
@@ -655,11 +662,7 @@ int AntiAliasing()
   auto aliased = scene.Render();
   scene.Pass->AntiAliasingOn();
   auto smooth = scene.Render();
-  scene.Pass->DebugOutputOn();
-  scene.Render();
-  vtkNew<vtkImageData> debug;
-  debug->DeepCopy(scene.Pass->GetDebugImage());
-  scene.Pass->DebugOutputOff();
+  vtkSmartPointer<vtkImageData> debug = scene.RenderDebug();
   RF_REQUIRE(scene.Pass->GetTextureBytes() > 0, "no targets");
 
   vtkSmartPointer<vtkImageData> reference = scene.Trace(vtkRefractionReference::TWO_INTERFACE, 4);
@@ -906,11 +909,7 @@ int SmoothInternalReflections()
   auto sharp = scene.Render();
   scene.Pass->SmoothInternalReflectionsOn();
   auto smooth = scene.Render();
-  scene.Pass->DebugOutputOn();
-  scene.Render();
-  vtkNew<vtkImageData> debug;
-  debug->DeepCopy(scene.Pass->GetDebugImage());
-  scene.Pass->DebugOutputOff();
+  vtkSmartPointer<vtkImageData> debug = scene.RenderDebug();
   scene.Pass->AntiAliasingOn();
   auto cornersSmooth = scene.Render();
   scene.Pass->SmoothInternalReflectionsOff();

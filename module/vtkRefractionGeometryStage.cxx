@@ -115,6 +115,12 @@ void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
       defines << "#define RF_SIGNED_FRONT\n";
     }
   }
+  this->PeelKBufferConfigured = peel && this->PeelKBuffer > 2 ? this->PeelKBuffer : 0;
+  if (this->PeelKBufferConfigured)
+  {
+    defines << "#define RF_PEEL_KBUFFER\n#define RF_PEEL_KBUFFER_LAYERS " << this->PeelKBufferConfigured
+            << "\n";
+  }
   this->UseSHTransfer = shTransfer;
   this->SHTransfer->Retain(shTransfer ? glass : std::vector<vtkProp*>());
   if (shTransfer)
@@ -325,6 +331,149 @@ bool vtkRefractionGeometryStage::DrawPeel(vtkOpenGLRenderer* ren, vtkRefractionT
 }
 
 //------------------------------------------------------------------------------
+int vtkRefractionGeometryStage::DrawPeelLayers(
+  vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layers, bool stopAtEmpty)
+{
+  if (this->PeelKBufferConfigured == layers && targets->Get(vtkRefractionTargets::PEEL_SLOTS))
+  {
+    return this->DrawPeelKBuffer(ren, targets, layers);
+  }
+  for (int layer = 1; layer < layers; ++layer)
+  {
+    if (!this->DrawPeel(ren, targets, layer, layers, stopAtEmpty))
+    {
+      // Nothing behind this layer's (empty) texels either: the layers from here on are left
+      // as they are, and the packing and the shading read them as empty.
+      return layer;
+    }
+  }
+  return layers;
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionGeometryStage::SupportsPeelKBuffer(
+  vtkOpenGLRenderWindow* renWin, int height, int layers)
+{
+  if (!renWin || layers < 3 || layers > 8 || height < 1)
+  {
+    return false;
+  }
+  // The program is GLSL 1.50 (VTK's) with the extensions: floatBitsToUint is GLSL 3.30's.
+  const bool images = (GLEW_VERSION_4_2 || GLEW_ARB_shader_image_load_store) &&
+    (GLEW_VERSION_3_3 || GLEW_ARB_shader_bit_encoding);
+  if (!images)
+  {
+    return false;
+  }
+  GLint imageUniforms = 0;
+  GLint imageUnits = 0;
+  GLint textureSize = 0;
+  glGetIntegerv(GL_MAX_FRAGMENT_IMAGE_UNIFORMS, &imageUniforms);
+  glGetIntegerv(GL_MAX_IMAGE_UNITS, &imageUnits);
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &textureSize);
+  // The slots, and one row more for the count of layers found.
+  return imageUniforms >= layers && imageUnits >= layers &&
+    static_cast<long long>(height) * (layers - 1) + 1 <= textureSize;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionGeometryStage::BindPeelImages(vtkRefractionTargets* targets, int layers)
+{
+  for (int unit = 0; unit < layers; ++unit)
+  {
+    vtkTextureObject* texture = !targets ? nullptr
+      : unit == 0                        ? targets->Get(vtkRefractionTargets::PEEL_SLOTS)
+                                         : targets->Get(vtkRefractionTargets::PEEL_1 + unit - 1);
+    glBindImageTexture(static_cast<GLuint>(unit), texture ? texture->GetHandle() : 0, 0,
+      GL_FALSE, 0, unit == 0 ? GL_READ_WRITE : GL_WRITE_ONLY,
+      unit == 0 ? GL_R32UI : GL_RGBA32F);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkRefractionGeometryStage::DrawPeelKBuffer(
+  vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layers)
+{
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkTextureObject* slots = targets->Get(vtkRefractionTargets::PEEL_SLOTS);
+  vtkTextureObject* front = targets->Get(vtkRefractionTargets::FRONT_SURFACE);
+  this->Width = static_cast<int>(front->GetWidth());
+  this->Height = static_cast<int>(front->GetHeight());
+  this->Origin[0] = 0;
+  this->Origin[1] = 0;
+  this->PeelSlotRows = this->Height;
+  const GLuint emptySlot = 0xFFFFFFFFu;
+  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
+  fbo->SaveCurrentBindingsAndBuffers();
+  fbo->Bind();
+  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  // The clears are the framebuffer's (glClearTexImage took about 4 ms a layer at 512 x 512 on
+  // llvmpipe). The last frame's draws wrote these textures through the images.
+  glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
+  fbo->RemoveDepthAttachment();
+  fbo->AddColorAttachment(0, slots);
+  fbo->ActivateDrawBuffers(1);
+  ostate->vtkglViewport(0, 0, this->Width, static_cast<int>(slots->GetHeight()));
+  glClearBufferuiv(GL_COLOR, 0, &emptySlot);
+  for (int layer = 1; layer < layers; ++layer)
+  {
+    fbo->AddColorAttachment(
+      static_cast<unsigned int>(layer - 1), targets->Get(vtkRefractionTargets::PEEL_1 + layer - 1));
+  }
+  fbo->ActivateDrawBuffers(static_cast<unsigned int>(layers - 1));
+  ostate->vtkglViewport(0, 0, this->Width, this->Height);
+  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+  for (int layer = layers - 1; layer > 1; --layer)
+  {
+    fbo->RemoveColorAttachment(static_cast<unsigned int>(layer - 1));
+  }
+  // The draws write through the images only: a framebuffer of the targets' size whose colour
+  // (the packed depths, written after) is masked and whose depth is not tested.
+  fbo->AddColorAttachment(0, targets->Get(vtkRefractionTargets::PEEL_DEPTHS_A));
+  fbo->AddDepthAttachment(targets->Get(vtkRefractionTargets::PEEL_Z));
+  fbo->ActivateDrawBuffers(1);
+  ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  this->BindPeelImages(targets, layers);
+  this->PeelPrevious = front;
+  this->PeelPrevious->Activate();
+  this->DrawProps(ren, STAGE_PEEL_DEPTHS);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  this->DrawProps(ren, STAGE_PEEL_LAYERS);
+  // The layers are read next as textures (the packing, the shading), the count below.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  this->BindPeelImages(nullptr, layers);
+  this->PeelPrevious->Deactivate();
+  this->PeelPrevious = nullptr;
+  this->PeelSlotRows = 0;
+  // How many layers hold glass anywhere: the first draw took the minimum of ~(slots filled)
+  // over the pixels into the texel past the last slot (rfPeelInsertDepth). Read now, as the
+  // peeling's occlusion queries are: the shading follows only the layers found.
+  GLuint count = emptySlot;
+  fbo->AddColorAttachment(0, slots);
+  fbo->ActivateReadBuffer(0);
+  glReadPixels(0, this->Height * (layers - 1), 1, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, &count);
+  fbo->UnBind();
+  fbo->RestorePreviousBindingsAndBuffers();
+  const int behindFront = static_cast<int>(emptySlot - count);
+  return 1 + std::min(std::max(behindFront, 0), layers - 1);
+}
+
+//------------------------------------------------------------------------------
 void vtkRefractionGeometryStage::DrawMask(vtkOpenGLRenderer* ren)
 {
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
@@ -377,6 +526,14 @@ bool vtkRefractionGeometryStage::PreReplaceShaderValues(std::string& vertexShade
   // and a colour texture applied after it) stays in gl_FragData[0] for the G-buffer to keep.
   vtkShaderProgram::Substitute(
     fragmentShader, "//VTK::Light::Impl", "gl_FragData[0] = RF_DATA_COLOUR;\n", false);
+  if (this->PeelKBufferConfigured)
+  {
+    // Before any declaration: after the #version that replaces the tag.
+    vtkShaderProgram::Substitute(fragmentShader, "//VTK::System::Dec",
+      "//VTK::System::Dec\n#extension GL_ARB_shader_image_load_store : require\n"
+      "#extension GL_ARB_shader_bit_encoding : require\n",
+      false);
+  }
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::Output::Dec",
     std::string("//VTK::Output::Dec\n") + kDecTag + "\n", false);
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::Coincident::Impl",
@@ -524,10 +681,26 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
     this->SHTransfer->Bind(program, prop, this->Renderer,
       static_cast<vtkOpenGLRenderWindow*>(this->Renderer->GetRenderWindow()));
   }
-  if (this->Stage == STAGE_PEEL && this->PeelPrevious && program->IsUniformUsed("rfPeelPrevious"))
+  const bool peelStage = this->Stage == STAGE_PEEL || this->Stage == STAGE_PEEL_DEPTHS ||
+    this->Stage == STAGE_PEEL_LAYERS;
+  if (peelStage && this->PeelPrevious && program->IsUniformUsed("rfPeelPrevious"))
   {
     program->SetUniformi("rfPeelPrevious", this->PeelPrevious->GetTextureUnit());
     program->SetUniformi("rfOutwardFront", this->IsOutwardFront(prop) ? 1 : 0);
+  }
+  if (program->IsUniformUsed("rfPeelSlots"))
+  {
+    // Image units 0 .. K - 1 (BindPeelImages); outside the k-buffer's draws nothing reads them.
+    program->SetUniformi("rfPeelSlots", 0);
+    program->SetUniformi("rfPeelSlotRows", this->PeelSlotRows);
+    for (int layer = 1; layer < this->PeelKBufferConfigured; ++layer)
+    {
+      const std::string name = "rfPeelLayer" + std::to_string(layer);
+      if (program->IsUniformUsed(name.c_str()))
+      {
+        program->SetUniformi(name.c_str(), layer);
+      }
+    }
   }
   else if (this->Stage == STAGE_FRONT && program->IsUniformUsed("rfOutwardFront"))
   {
@@ -560,7 +733,9 @@ void vtkRefractionGeometryStage::CullHiddenFaces(vtkProp* prop)
   // window's samples culls as the front stage does (on llvmpipe in a 4-sample window it took
   // 190 ms a frame on the benchmark's sphere unculled, 48 culled), but not with edges shown:
   // VTK's edges of the back faces show at the silhouette, and an opaque actor shows them.
-  if (this->State && this->Stage == STAGE_PEEL)
+  if (this->State &&
+    (this->Stage == STAGE_PEEL || this->Stage == STAGE_PEEL_DEPTHS ||
+      this->Stage == STAGE_PEEL_LAYERS))
   {
     this->State->vtkglDisable(GL_CULL_FACE);
     return;

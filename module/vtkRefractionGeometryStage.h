@@ -46,7 +46,9 @@ public:
     STAGE_BACK = 2,
     STAGE_MASK = 3,
     STAGE_PEEL = 4,
-    STAGE_COMPOSITE = 5
+    STAGE_COMPOSITE = 5,
+    STAGE_PEEL_DEPTHS = 6, ///< the k-buffer's first draw: the layers' depths (DrawPeelLayers)
+    STAGE_PEEL_LAYERS = 7  ///< its second: the layers' normals and materials
   };
 
   /**
@@ -74,6 +76,23 @@ public:
   /// layer is drawn anyway, and the read would wait for each layer for nothing.
   bool DrawPeel(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layer, int layers,
     bool askWhetherEmpty = true);
+  /**
+   * PEEL's layers 1 .. K - 1 behind the front (drawn first), and how many of the K layers
+   * hold glass anywhere (the front counts). Peeled one draw per layer (DrawPeel, stopping at
+   * the first empty one when `stopAtEmpty`), or, configured with SetPeelKBuffer, in two draws
+   * whatever K: the depths sorted into PEEL_SLOTS with image atomics, then each layer's
+   * texels. The same texels either way.
+   */
+  int DrawPeelLayers(
+    vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layers, bool stopAtEmpty);
+  /// Whether this context can sort `layers` layers of `height` rows with image atomics (GL
+  /// 4.2's image load/store and 3.3's float bits, or their ARB extensions), with K image
+  /// units for the fragment shader and a texture (K - 1) times the height, plus one row.
+  static bool SupportsPeelKBuffer(vtkOpenGLRenderWindow* renWin, int height, int layers);
+  /// K where DrawPeelLayers sorts the layers with image atomics (3 and more, where
+  /// SupportsPeelKBuffer; PEEL_SLOTS must then be allocated), 0 where it peels them one draw
+  /// per layer. Takes effect at Configure.
+  void SetPeelKBuffer(int layers) { this->PeelKBuffer = layers; }
   /// SSP's refraction mask into the alpha of the framebuffer bound now.
   void DrawMask(vtkOpenGLRenderer* ren);
   /// The glass props into the framebuffer bound now (the renderer's viewport) for `stage`,
@@ -139,6 +158,10 @@ private:
     const std::vector<int>& colours, int depth, double clearDepth, unsigned int depthFunc,
     int stage);
   void DrawProps(vtkOpenGLRenderer* ren, int stage);
+  /// The k-buffer's two draws (DrawPeelLayers); returns the layers found.
+  int DrawPeelKBuffer(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layers);
+  /// Binds PEEL_SLOTS and the layers to image units 0 .. K - 1 (nullptr targets: unbinds).
+  void BindPeelImages(vtkRefractionTargets* targets, int layers);
   /// Whether every mesh of the prop has ISR's d_N array.
   bool HasNormalDistance(vtkProp* prop);
   /// Whether the prop's outward side is the GL front face on screen (winding and mirroring).
@@ -162,6 +185,9 @@ private:
   bool DataColour = false;
   bool BackNearest = false;
   bool Peel = false;
+  int PeelKBuffer = 0;           ///< asked for (SetPeelKBuffer)
+  int PeelKBufferConfigured = 0; ///< compiled into the mappers' program (Configure)
+  int PeelSlotRows = 0;               ///< the rows of one slot of PEEL_SLOTS, during its draws
   bool SignedFront = false;
   bool SampleComposite = false;
   bool SeparateCompositeProgram = false;

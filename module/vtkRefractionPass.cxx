@@ -110,6 +110,7 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SmoothInternalReflections: " << this->SmoothInternalReflections << "\n";
   os << indent << "PeelLayers: " << this->PeelLayers << "\n";
   os << indent << "PeelLayersFound: " << this->PeelLayersFound << "\n";
+  os << indent << "PeelCapture: " << this->PeelCapture << "\n";
   os << indent << "SHSmoothing: " << this->SHSmoothing << "\n";
   os << indent << "EnvironmentMode: "
      << (this->EnvironmentMode == ENVIRONMENT_RENDERER ? "renderer" : "builtin") << "\n";
@@ -354,6 +355,15 @@ void vtkRefractionPass::RenderGlass(
   }
   std::vector<bool> wanted;
   method->AddTargets(wanted, this);
+  const int peelLayers = method->GetPeelLayers(this);
+  // AUTO: the k-buffer's fixed cost (its clears, two draws of every fragment with atomics)
+  // beats peeling on llvmpipe only where many layers are drawn (SetPeelCapture).
+  const bool peelKBuffer = peelLayers > 2 &&
+    (this->PeelCapture == PEEL_CAPTURE_K_BUFFER ||
+      (this->PeelCapture == PEEL_CAPTURE_AUTO && peelLayers >= 6 && this->PeelLayersFound > 3)) &&
+    vtkRefractionGeometryStage::SupportsPeelKBuffer(renWin, this->Height, peelLayers);
+  wanted[vtkRefractionTargets::PEEL_SLOTS] = peelKBuffer;
+  this->Targets->SetPeelSlots(peelLayers - 1);
   if (sceneCapture)
   {
     wanted[vtkRefractionTargets::SCENE_COLOR] = true;
@@ -419,7 +429,7 @@ void vtkRefractionPass::RenderGlass(
                     << " share one index of refraction (at most "
                     << vtkRefractionShadeStage::MaximumMaterials << " are told apart).");
   }
-  const int peelLayers = method->GetPeelLayers(this);
+  this->GeometryStage->SetPeelKBuffer(peelKBuffer ? peelLayers : 0);
   this->GeometryStage->SetSHSmoothing(this->SHSmoothing);
   this->GeometryStage->SetSheetPieceMaterials(this->Materials->GetSheetPieceMaterial());
   this->GeometryStage->SetSignedFront(exchange && peelLayers > 1);
@@ -491,16 +501,8 @@ void vtkRefractionPass::RenderGlass(
     if (!exchange) // drawn and composited above
     {
       vtkRefractionDepthRange::ComputeBounds(ren, glass, this->BoundsDepthRange);
-      for (int layer = 1; layer < peelLayers; ++layer)
-      {
-        if (!this->GeometryStage->DrawPeel(ren, this->Targets, layer, peelLayers))
-        {
-          // Nothing behind this layer's (empty) texels either: the layers from here on are
-          // left as they are, and the packing and the shading read them as empty.
-          this->PeelLayersFound = layer;
-          break;
-        }
-      }
+      this->PeelLayersFound =
+        this->GeometryStage->DrawPeelLayers(ren, this->Targets, peelLayers, true);
     }
     const bool packed =
       this->LayerPack->Pack(renWin, this->Targets, peelLayers, this->PeelLayersFound);

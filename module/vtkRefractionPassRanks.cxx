@@ -27,10 +27,7 @@ bool vtkRefractionPass::CompositeAcrossRanks(vtkOpenGLRenderer* ren,
   if (peelLayers > 1)
   {
     this->StageTimers->Start(TIMED_BACK_CAPTURE);
-    for (int layer = 1; layer < peelLayers; ++layer)
-    {
-      this->GeometryStage->DrawPeel(ren, this->Targets, layer, peelLayers, false);
-    }
+    this->GeometryStage->DrawPeelLayers(ren, this->Targets, peelLayers, false);
     this->StageTimers->Stop(TIMED_BACK_CAPTURE);
   }
   if ((method->NeedsDepthRange() && !reduction) || peelLayers > 1)

@@ -47,6 +47,7 @@ const TargetFormat kFormats[vtkRefractionTargets::TARGET_COUNT] = {
   { "peel z-buffer", 0, 0, 0, vtkTextureObject::Nearest },
   { "peeled depths 0-3", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "peeled depths 4-7", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
+  { "peel slots", 1, GL_R32UI, GL_RED_INTEGER, vtkTextureObject::Nearest },
   { "front SH exit", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "debug P2", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "debug T2", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
@@ -60,12 +61,14 @@ vtkSmartPointer<vtkTextureObject> MakeColorTexture(vtkOpenGLRenderWindow* renWin
   texture->SetInternalFormat(internalFormat);
   texture->SetFormat(format);
   const bool bytes = internalFormat == GL_RGBA8;
-  texture->SetDataType(bytes ? GL_UNSIGNED_BYTE : GL_FLOAT);
+  const bool integers = internalFormat == GL_R32UI;
+  texture->SetDataType(bytes ? GL_UNSIGNED_BYTE : integers ? GL_UNSIGNED_INT : GL_FLOAT);
   texture->SetMinificationFilter(filter);
   texture->SetMagnificationFilter(filter);
   texture->SetWrapS(vtkTextureObject::ClampToEdge);
   texture->SetWrapT(vtkTextureObject::ClampToEdge);
-  texture->Allocate2D(width, height, components, bytes ? VTK_UNSIGNED_CHAR : VTK_FLOAT);
+  texture->Allocate2D(
+    width, height, components, bytes ? VTK_UNSIGNED_CHAR : integers ? VTK_UNSIGNED_INT : VTK_FLOAT);
   return texture;
 }
 
@@ -147,8 +150,10 @@ void vtkRefractionTargets::Allocate(vtkOpenGLRenderWindow* renWin, int target)
   }
   else
   {
+    // PEEL's slots, and one row more for the count of layers found (its first texel).
+    const int rows = target == PEEL_SLOTS ? this->Height * this->PeelSlots + 1 : this->Height;
     this->Targets[target] = MakeColorTexture(
-      renWin, this->Width, this->Height, f.Components, f.InternalFormat, f.Format, f.Filter);
+      renWin, this->Width, rows, f.Components, f.InternalFormat, f.Format, f.Filter);
   }
   this->TargetBytes[target] = MeasureBytes(this->Targets[target]);
   this->MipmapsCounted[target] = false;
@@ -163,6 +168,18 @@ void vtkRefractionTargets::CountMipmaps(int target)
     this->TargetBytes[target] = MeasureBytes(this->Targets[target]);
     this->MipmapsCounted[target] = true;
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionTargets::SetPeelSlots(int slots)
+{
+  slots = slots < 1 ? 1 : slots;
+  if (slots != this->PeelSlots && this->Targets[PEEL_SLOTS])
+  {
+    this->Targets[PEEL_SLOTS] = nullptr; // released with its context by its destructor
+    this->TargetBytes[PEEL_SLOTS] = 0;
+  }
+  this->PeelSlots = slots;
 }
 
 //------------------------------------------------------------------------------

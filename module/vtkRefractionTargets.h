@@ -57,6 +57,8 @@ public:
     PEEL_Z,            ///< DEPTH32F: the depth test of the peeling
     PEEL_DEPTHS_A,     ///< RGBA32F: the depths of layers 0-3 (vtkRefractionLayerPack)
     PEEL_DEPTHS_B,     ///< RGBA32F: the depths of layers 4-7
+    PEEL_SLOTS,        ///< R32UI, SetPeelSlots times the height: PEEL's k-buffer, the depths
+                       ///< of layers 1 .. K - 1 sorted (vtkRefractionGeometryStage)
     FRONT_SH,          ///< RGBA32F: the SH method's exit direction (view space) and length
     DEBUG_0,           ///< RGBA32F: P2 and |P2 - P1|
     DEBUG_1,           ///< RGBA32F: T2 and the flags
@@ -94,6 +96,10 @@ public:
    */
   bool MatchSceneDepth(std::string& error);
 
+  /// How many slots (rows of the height each) PEEL_SLOTS holds: K - 1. Call before Update;
+  /// a change allocates it again.
+  void SetPeelSlots(int slots);
+
   /// Bytes of all allocated targets, as the driver reports their formats.
   unsigned long long GetBytes() const;
 
@@ -122,6 +128,7 @@ private:
   int Width = 0;
   int Height = 0;
   int SceneDepthFormat = -1; // vtkTextureObject's depth enum; -1: DEPTH24_STENCIL8
+  int PeelSlots = 1;
 };
 
 #endif

@@ -47,6 +47,36 @@ in vec4 rfSHExitVSOut; // the SH method's exit direction (view) and length (rfSH
 uniform sampler2D rfPeelPrevious;
 uniform int rfOutwardFront;
 #endif
+#ifdef RF_PEEL_KBUFFER
+//  6 peel depths, 7 peel layers (RF_PEEL_KBUFFER, vtkRefractionGeometryStage::DrawPeelLayers):
+//    the same layers as stage 4 in two draws instead of K - 1. Stage 6 inserts every
+//    fragment's -z behind the front (rfPeelPrevious) into the pixel's K - 1 slots, which keep
+//    the nearest distinct depths sorted: a chain of atomic minimums, correct in any order of
+//    the fragments (the k-buffer's insertion, Bavoil et al. 2007, with image atomics). Stage 7
+//    writes each fragment whose depth a slot holds into that slot's layer, as stage 4 would.
+//    The depths are compared as the bits of positive floats, which order as the floats do.
+layout(r32ui) uniform uimage2D rfPeelSlots; // slot i of pixel p at p + (0, i * rfPeelSlotRows)
+uniform int rfPeelSlotRows;
+layout(rgba32f) writeonly uniform image2D rfPeelLayer1;
+#if RF_PEEL_KBUFFER_LAYERS > 2
+layout(rgba32f) writeonly uniform image2D rfPeelLayer2;
+#endif
+#if RF_PEEL_KBUFFER_LAYERS > 3
+layout(rgba32f) writeonly uniform image2D rfPeelLayer3;
+#endif
+#if RF_PEEL_KBUFFER_LAYERS > 4
+layout(rgba32f) writeonly uniform image2D rfPeelLayer4;
+#endif
+#if RF_PEEL_KBUFFER_LAYERS > 5
+layout(rgba32f) writeonly uniform image2D rfPeelLayer5;
+#endif
+#if RF_PEEL_KBUFFER_LAYERS > 6
+layout(rgba32f) writeonly uniform image2D rfPeelLayer6;
+#endif
+#if RF_PEEL_KBUFFER_LAYERS > 7
+layout(rgba32f) writeonly uniform image2D rfPeelLayer7;
+#endif
+#endif
 #ifdef RF_PIECE_SHEETS
 // A mesh whose connected pieces disagree (vtkRefractionSurfaceModel): 1 on its thin-sheet
 // pieces, which take the material rfSheetMaterial (its solid pieces keep rfMaterial).
@@ -148,6 +178,93 @@ vec3 rfSafeNormal(vec3 n, vec3 p)
   return dot(v, v) > 0.0 ? -v : vec3(0.0, 0.0, 1.0);
 }
 
+#ifdef RF_PEEL_KBUFFER
+const uint rfPeelEmptySlot = 0xFFFFFFFFu;
+
+// Stage 6: `depth` into the pixel's slots. Each atomic minimum leaves the smaller of the two
+// depths in the slot and carries the larger on; a depth the slot already holds (two fragments
+// of one surface at the same depth) goes no further, as peeling takes it once.
+// Where a depth fills an empty slot, the texel past the last slot (its first column) takes
+// the minimum of ~(slots filled): how many layers lie behind the front somewhere, for
+// vtkRefractionPass::GetPeelLayersFound and the shading, without a count per layer.
+void rfPeelInsertDepth(ivec2 pixel, uint depth)
+{
+  for (int slot = 0; slot < RF_PEEL_KBUFFER_LAYERS - 1; ++slot)
+  {
+    uint held = imageAtomicMin(rfPeelSlots, pixel + ivec2(0, slot * rfPeelSlotRows), depth);
+    if (held == rfPeelEmptySlot)
+    {
+      imageAtomicMin(rfPeelSlots, ivec2(0, (RF_PEEL_KBUFFER_LAYERS - 1) * rfPeelSlotRows),
+        ~uint(slot + 1));
+      return;
+    }
+    if (held == depth)
+    {
+      return;
+    }
+    depth = max(held, depth);
+  }
+}
+
+// Stage 7: the slot that holds `depth`, or -1 (the pixel's K - 1 nearest are in front of it).
+int rfPeelFindSlot(ivec2 pixel, uint depth)
+{
+  for (int slot = 0; slot < RF_PEEL_KBUFFER_LAYERS - 1; ++slot)
+  {
+    uint held = imageLoad(rfPeelSlots, pixel + ivec2(0, slot * rfPeelSlotRows)).x;
+    if (held >= depth)
+    {
+      return held == depth ? slot : -1;
+    }
+  }
+  return -1;
+}
+
+void rfPeelStoreLayer(int slot, ivec2 pixel, vec4 texel)
+{
+  if (slot == 0)
+  {
+    imageStore(rfPeelLayer1, pixel, texel);
+  }
+#if RF_PEEL_KBUFFER_LAYERS > 2
+  else if (slot == 1)
+  {
+    imageStore(rfPeelLayer2, pixel, texel);
+  }
+#endif
+#if RF_PEEL_KBUFFER_LAYERS > 3
+  else if (slot == 2)
+  {
+    imageStore(rfPeelLayer3, pixel, texel);
+  }
+#endif
+#if RF_PEEL_KBUFFER_LAYERS > 4
+  else if (slot == 3)
+  {
+    imageStore(rfPeelLayer4, pixel, texel);
+  }
+#endif
+#if RF_PEEL_KBUFFER_LAYERS > 5
+  else if (slot == 4)
+  {
+    imageStore(rfPeelLayer5, pixel, texel);
+  }
+#endif
+#if RF_PEEL_KBUFFER_LAYERS > 6
+  else if (slot == 5)
+  {
+    imageStore(rfPeelLayer6, pixel, texel);
+  }
+#endif
+#if RF_PEEL_KBUFFER_LAYERS > 7
+  else if (slot == 6)
+  {
+    imageStore(rfPeelLayer7, pixel, texel);
+  }
+#endif
+}
+#endif
+
 // The fragment's view-space position from gl_FragCoord, for mappers that declare no vertexVC.
 vec3 rfReconstructPositionVC()
 {
@@ -175,18 +292,35 @@ vec3 rfReconstructPositionVC()
     vec3 rfN = rfSafeNormal(RF_NORMAL_VC, rfP);
     vec3 rfV = rfViewDirection(rfP);
 #ifdef RF_PEEL_CAPTURE
-    if (rfGeometryStage == 4)
+    if (rfGeometryStage == 4 || rfGeometryStage == 6 || rfGeometryStage == 7)
     {
       // Exactly the previous layer's fragment computes the same -z again: <= peels it off.
-      float rfPrevious =
-        texelFetch(rfPeelPrevious, ivec2(gl_FragCoord.xy - rfViewport.xy), 0).z;
-      if (!(rfPrevious > 0.0) || -rfP.z <= rfPrevious)
+      ivec2 rfPixel = ivec2(gl_FragCoord.xy - rfViewport.xy);
+      float rfPrevious = texelFetch(rfPeelPrevious, rfPixel, 0).z;
+      bool rfBehind = rfPrevious > 0.0 && -rfP.z > rfPrevious;
+      bool rfOutwardToViewer = gl_FrontFacing == (rfOutwardFront == 1);
+      vec4 rfLayerTexel = vec4(rf_oct_encode(dot(rfN, rfV) > 0.0 ? -rfN : rfN), -rfP.z,
+        rfOutwardToViewer ? RF_FRAGMENT_MATERIAL : -RF_FRAGMENT_MATERIAL);
+#ifdef RF_PEEL_KBUFFER
+      if (rfGeometryStage == 6 && rfBehind)
+      {
+        rfPeelInsertDepth(rfPixel, floatBitsToUint(-rfP.z));
+      }
+      else if (rfGeometryStage == 7 && rfBehind)
+      {
+        int rfSlot = rfPeelFindSlot(rfPixel, floatBitsToUint(-rfP.z));
+        if (rfSlot >= 0)
+        {
+          rfPeelStoreLayer(rfSlot, rfPixel, rfLayerTexel);
+        }
+      }
+      else
+#endif
+      if (!rfBehind)
       {
         discard;
       }
-      bool rfOutwardToViewer = gl_FrontFacing == (rfOutwardFront == 1);
-      gl_FragData[0] = vec4(rf_oct_encode(dot(rfN, rfV) > 0.0 ? -rfN : rfN), -rfP.z,
-        rfOutwardToViewer ? RF_FRAGMENT_MATERIAL : -RF_FRAGMENT_MATERIAL);
+      gl_FragData[0] = rfLayerTexel; // stage 4's output; stages 6 and 7 write no colour
     }
     else
 #endif

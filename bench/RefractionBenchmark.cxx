@@ -266,6 +266,7 @@ int main(int argc, char* argv[])
   // have always been measured over), the renderer's background for the scene mesh; each
   // reference follows the pass.
   pass->SetEnvironmentModeToBuiltin();
+  pass->SetPeelCapture(options.PeelCapture);
   const int ss = options.Supersample;
 
   // Errors do not depend on timing noise: one picture per row, against the four references
@@ -444,8 +445,12 @@ int main(int argc, char* argv[])
   run << "Environment: " << environmentDescription << ". Run: " << rows.size() << " rows x " << options.Repeats << " repeats (seed "
       << options.Seed << "), " << options.Frames << " timed frames each, references "
       << ss << "x" << ss << " rays per pixel for `SS`; window multisamples "
-      << window->GetMultiSamples() << "; "
-      << (options.Quick ? "--quick preset; " : options.Smoke ? "--smoke preset; " : "")
+      << window->GetMultiSamples() << "; PEEL's layers captured by "
+      << (options.PeelCapture == vtkRefractionPass::PEEL_CAPTURE_DEPTH_PEELING ? "depth peeling"
+           : options.PeelCapture == vtkRefractionPass::PEEL_CAPTURE_K_BUFFER
+           ? "the k-buffer where supported"
+           : "the default (auto)")
+      << "; " << (options.Quick ? "--quick preset; " : options.Smoke ? "--smoke preset; " : "")
       << "took " << Clock(elapsed()) << " (m:s). Machine load (1-minute load average) "
       << loadBefore << " when the timing began and " << loadAfter << " when it ended, on "
       << std::thread::hardware_concurrency() << " logical CPUs: a load "

@@ -44,6 +44,7 @@ bool ParseInt(const std::string& text, int lo, int hi, int& value)
 bool Parse(int argc, char* argv[], Options& o)
 {
   std::string sizes, meshes, methods, frames, repeats, seed, supersample, multisamples;
+  std::string peelCapture;
   bool help = false;
   using Args = vtksys::CommandLineArguments;
   Args args;
@@ -72,6 +73,9 @@ bool Parse(int argc, char* argv[], Options& o)
     "Samples per pixel of the window, 0..16 (default 0: single-sampled; VTK's own default is "
     "8). Above 0, --quick adds the rows `DIR 5 px` and `DIR 5 AA px`: the glass composited "
     "pixel by pixel (SetMultiSampleSilhouette(false)) instead of at the window's samples.");
+  args.AddArgument("--peel-capture", Args::SPACE_ARGUMENT, &peelCapture,
+    "How PEEL captures its layers on every row (vtkRefractionPass::SetPeelCapture): auto "
+    "(default), peeling (one draw per layer) or k-buffer (two draws, image atomics).");
   args.AddArgument("--environment", Args::SPACE_ARGUMENT, &o.Environment,
     "builtin (the pass's built-in sky, default), studio (an HDR lat-long image made in "
     "code: dim walls, bright soft boxes up to 8), or a lat-long .hdr file; the last two go "
@@ -172,6 +176,21 @@ bool Parse(int argc, char* argv[], Options& o)
                          "--supersample (2..16) or --multisamples (0..16): not a number in "
                          "range\n");
     return false;
+  }
+  if (!peelCapture.empty())
+  {
+    const char* const names[] = { "auto", "peeling", "k-buffer" };
+    o.PeelCapture = -1;
+    for (int mode = 0; mode < 3; ++mode)
+    {
+      o.PeelCapture = peelCapture == names[mode] ? mode : o.PeelCapture;
+    }
+    if (o.PeelCapture < 0)
+    {
+      std::fprintf(stderr, "--peel-capture: '%s' is not auto, peeling or k-buffer\n",
+        peelCapture.c_str());
+      return false;
+    }
   }
   if (o.Convergence && o.Supersample > 16)
   {

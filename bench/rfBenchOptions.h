@@ -19,6 +19,7 @@ struct Options
   int Seed = 1;
   int Supersample = 4;
   int MultiSamples = 0; // the window's (--multisamples)
+  int PeelCapture = 0;  // vtkRefractionPass::SetPeelCapture (--peel-capture)
   bool Smoke = false;
   bool Quick = false;
   bool X11 = false;

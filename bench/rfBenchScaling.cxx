@@ -233,6 +233,7 @@ bool RunScaling(vtkRenderWindow* window, vtkRenderer* renderer, const Options& o
 
   vtkNew<vtkRefractionPass> pass;
   pass->SetEnvironmentModeToBuiltin();
+  pass->SetPeelCapture(o.PeelCapture);
   renderer->SetBackground(0.0, 0.0, 0.0);
   renderer->SetGradientBackground(false);
   // Every (cell, method) job `Repeats` times in one seeded shuffled order; each times the glass

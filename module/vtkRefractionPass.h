@@ -316,10 +316,10 @@ public:
    * PEEL: the layers of the glass captured by depth peeling, K (4 by default, as the paper),
    * counting the front surface: with 2 the layer behind the front is the furthest surface, what
    * DIR's back capture holds (the two-interface model); from 3 on they are the K nearest
-   * surfaces. Each further layer costs one more draw of the glass and 16 bytes per pixel.
-   * Rays follow at most K - 1 + TIRBounces interfaces after the front one. Peeling stops at
-   * the first layer that comes out empty (an occlusion query per layer): the layers behind it
-   * would be empty too, so a convex glass costs two draws whatever K.
+   * surfaces. Each further layer costs one more draw of the glass (or none, SetPeelCapture)
+   * and 16 bytes per pixel. Rays follow at most K - 1 + TIRBounces interfaces after the front
+   * one. Peeling stops at the first layer that comes out empty (an occlusion query per layer):
+   * the layers behind it would be empty too, so a convex glass costs two draws whatever K.
    */
   vtkSetClampMacro(PeelLayers, int, 2, 8);
   vtkGetMacro(PeelLayers, int);

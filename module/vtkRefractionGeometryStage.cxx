@@ -688,6 +688,10 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
     program->SetUniformi("rfPeelPrevious", this->PeelPrevious->GetTextureUnit());
     program->SetUniformi("rfOutwardFront", this->IsOutwardFront(prop) ? 1 : 0);
   }
+  else if (this->Stage == STAGE_FRONT && program->IsUniformUsed("rfOutwardFront"))
+  {
+    program->SetUniformi("rfOutwardFront", this->IsOutwardFront(prop) ? 1 : 0);
+  }
   if (program->IsUniformUsed("rfPeelSlots"))
   {
     // Image units 0 .. K - 1 (BindPeelImages); outside the k-buffer's draws nothing reads them.
@@ -701,10 +705,6 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
         program->SetUniformi(name.c_str(), layer);
       }
     }
-  }
-  else if (this->Stage == STAGE_FRONT && program->IsUniformUsed("rfOutwardFront"))
-  {
-    program->SetUniformi("rfOutwardFront", this->IsOutwardFront(prop) ? 1 : 0);
   }
   if (program->IsUniformUsed("rfWindingSign"))
   {

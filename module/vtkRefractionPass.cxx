@@ -357,10 +357,12 @@ void vtkRefractionPass::RenderGlass(
   method->AddTargets(wanted, this);
   const int peelLayers = method->GetPeelLayers(this);
   // AUTO: the k-buffer's fixed cost (its clears, two draws of every fragment with atomics)
-  // beats peeling on llvmpipe only where many layers are drawn (SetPeelCapture).
+  // beats peeling on llvmpipe only where many layers are drawn (SetPeelCapture). Not across
+  // ranks, where every layer is drawn and no test runs the k-buffer yet.
   const bool peelKBuffer = peelLayers > 2 &&
     (this->PeelCapture == PEEL_CAPTURE_K_BUFFER ||
-      (this->PeelCapture == PEEL_CAPTURE_AUTO && peelLayers >= 6 && this->PeelLayersFound > 3)) &&
+      (this->PeelCapture == PEEL_CAPTURE_AUTO && !exchange && peelLayers >= 6 &&
+        this->PeelLayersFound > 3)) &&
     vtkRefractionGeometryStage::SupportsPeelKBuffer(renWin, this->Height, peelLayers);
   wanted[vtkRefractionTargets::PEEL_SLOTS] = peelKBuffer;
   this->Targets->SetPeelSlots(peelLayers - 1);

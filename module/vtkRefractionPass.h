@@ -340,7 +340,8 @@ public:
    * sorts each pixel's nearest depths behind the front into K - 1 slots with image atomics
    * (4 more bytes per slot and pixel), the second writes each layer's normal and material.
    * The same layers, so the same pictures. AUTO (default): the k-buffer with 6 or more layers
-   * where the last PEEL frame found more than 3 holding glass, peeling otherwise. Measured on
+   * where the last PEEL frame found more than 3 holding glass (in one process: across MPI
+   * ranks only K_BUFFER asks for it), peeling otherwise. Measured on
    * llvmpipe, 2 cores, VTK's default window at 512x512 (docs/benchmark.md): PEEL 8 on the
    * bunny 6.9 -> 4.6 times plain VTK, on the nested contours 7.6 -> 6.2, on the sphere (two
    * layers, where peeling stops after one draw) 4.8 -> 5.5; with 4 layers the two read alike.

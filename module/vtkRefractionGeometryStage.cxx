@@ -402,7 +402,6 @@ int vtkRefractionGeometryStage::DrawPeelKBuffer(
   this->Height = static_cast<int>(front->GetHeight());
   this->Origin[0] = 0;
   this->Origin[1] = 0;
-  this->PeelSlotRows = this->Height;
   const GLuint emptySlot = 0xFFFFFFFFu;
   vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
   fbo->SaveCurrentBindingsAndBuffers();
@@ -459,7 +458,6 @@ int vtkRefractionGeometryStage::DrawPeelKBuffer(
   this->BindPeelImages(nullptr, layers);
   this->PeelPrevious->Deactivate();
   this->PeelPrevious = nullptr;
-  this->PeelSlotRows = 0;
   // How many layers hold glass anywhere: the first draw took the minimum of ~(slots filled)
   // over the pixels into the texel past the last slot (rfPeelInsertDepth). Read now, as the
   // peeling's occlusion queries are: the shading follows only the layers found.
@@ -696,7 +694,8 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
   {
     // Image units 0 .. K - 1 (BindPeelImages); outside the k-buffer's draws nothing reads them.
     program->SetUniformi("rfPeelSlots", 0);
-    program->SetUniformi("rfPeelSlotRows", this->PeelSlotRows);
+    // One slot's rows: the targets' height, which the k-buffer's draws set (DrawPeelKBuffer).
+    program->SetUniformi("rfPeelSlotRows", this->Height);
     for (int layer = 1; layer < this->PeelKBufferConfigured; ++layer)
     {
       const std::string name = "rfPeelLayer" + std::to_string(layer);

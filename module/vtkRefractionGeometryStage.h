@@ -187,7 +187,6 @@ private:
   bool Peel = false;
   int PeelKBuffer = 0;           ///< asked for (SetPeelKBuffer)
   int PeelKBufferConfigured = 0; ///< compiled into the mappers' program (Configure)
-  int PeelSlotRows = 0;               ///< the rows of one slot of PEEL_SLOTS, during its draws
   bool SignedFront = false;
   bool SampleComposite = false;
   bool SeparateCompositeProgram = false;

@@ -149,15 +149,30 @@ RF_KERNEL int rfk_peel_next_crossing(rf_layer_stack layers, int count, rfk_camer
   rf_float dt = tEnd / rf_float_of(steps);
   rfk_peel_clip_ray clipRay = rfk_peel_clip_ray_of(camera, P, T);
   int before = side;
-  for (int i = 1; i <= steps; ++i)
+  int i = 1;
+  /* The march's own loop holds one fetch a step and nothing else: the bracket's refinement
+   * below runs once per change of side found. Inside the loop it ran at every step, since
+   * llvmpipe (like a GPU's warp where any lane needs it) runs an if's body for the whole
+   * block of pixels under a mask; only a loop ends once all of its pixels are done. The same
+   * steps and crossings as before. */
+  while (i <= steps)
   {
     rf_float t = dt * rf_float_of(i);
     int now = rfk_peel_side_at(layers, count, camera.viewportSize, clipRay, t);
+    while (now == before && i < steps)
+    {
+      i = i + 1;
+      t = dt * rf_float_of(i);
+      now = rfk_peel_side_at(layers, count, camera.viewportSize, clipRay, t);
+    }
     if (now < 0)
     {
       return RF_PEEL_NONE; /* the layers hold nothing beyond the image */
     }
-    if (now != before)
+    if (now == before)
+    {
+      return RF_PEEL_NONE; /* the segment's end, no change of side */
+    }
     {
       rf_float lo = t - dt;
       rf_float hi = t;
@@ -226,6 +241,7 @@ RF_KERNEL int rfk_peel_next_crossing(rf_layer_stack layers, int count, rfk_camer
       /* A fault zone (the paper's case 2): go on from the side found beyond it. */
       before = farSide;
     }
+    i = i + 1;
   }
   return RF_PEEL_NONE;
 }

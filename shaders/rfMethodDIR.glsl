@@ -130,34 +130,40 @@ bool rfFollowInside(vec3 P, vec3 T, out vec3 exitP, out vec3 exitN)
   float toFront;
   float toBack;
   vec4 front;
-  for (int i = 1; i <= RF_FOLLOW_INSIDE_STEPS; ++i)
+  // The march's loop holds the step alone and the bisection follows it: inside the loop the
+  // bisection ran at every step (llvmpipe runs an if's body for the whole block under a mask).
+  int i = 1;
+  bool inside = rfInsideAt(P + dt * T, tc, toFront, toBack, front);
+  while (inside && i < RF_FOLLOW_INSIDE_STEPS)
   {
-    if (!rfInsideAt(P + (float(i) * dt) * T, tc, toFront, toBack, front))
+    i = i + 1;
+    inside = rfInsideAt(P + (float(i) * dt) * T, tc, toFront, toBack, front);
+  }
+  if (inside)
+  {
+    return false;
+  }
+  float lo = float(i - 1) * dt;
+  float hi = float(i) * dt;
+  for (int j = 0; j < 6; ++j)
+  {
+    float mid = 0.5 * (lo + hi);
+    if (rfInsideAt(P + mid * T, tc, toFront, toBack, front))
     {
-      float lo = float(i - 1) * dt;
-      float hi = float(i) * dt;
-      for (int j = 0; j < 6; ++j)
-      {
-        float mid = 0.5 * (lo + hi);
-        if (rfInsideAt(P + mid * T, tc, toFront, toBack, front))
-        {
-          lo = mid;
-        }
-        else
-        {
-          hi = mid;
-        }
-      }
-      // The last inside point says which surface is near; none inside (the very first step
-      // left): the start's own surfaces decide.
-      rfInsideAt(P + lo * T, tc, toFront, toBack, front);
-      vec3 normal = toFront < toBack ? rf_oct_decode(front.xy)
-                                     : textureLod(rfBackSurface, tc, 0.0).xyz;
-      exitP = P + (0.5 * (lo + hi)) * T;
-      exitN = normal;
-      return dot(normal, normal) > 0.0;
+      lo = mid;
+    }
+    else
+    {
+      hi = mid;
     }
   }
-  return false;
+  // The last inside point says which surface is near; none inside (the very first step
+  // left): the start's own surfaces decide.
+  rfInsideAt(P + lo * T, tc, toFront, toBack, front);
+  vec3 normal = toFront < toBack ? rf_oct_decode(front.xy)
+                                 : textureLod(rfBackSurface, tc, 0.0).xyz;
+  exitP = P + (0.5 * (lo + hi)) * T;
+  exitN = normal;
+  return dot(normal, normal) > 0.0;
 }
 #endif

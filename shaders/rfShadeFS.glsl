@@ -98,6 +98,18 @@ float rfSceneWindowDepth(vec2 tc)
   return texelFetch(rfSceneDepth, rfTexelOf(tc), 0).r;
 }
 
+// Whether P + t T (clipP + t clipT) is in front of the opaque scene captured there (the
+// background, window depth 1, is behind every point of the frustum); offImage where it leaves
+// the image.
+bool rfSceneInFrontAt(vec4 clipP, vec4 clipT, float t, out bool offImage)
+{
+  float depth;
+  vec2 tc = rfSceneSample(clipP, clipT, t, depth);
+  offImage = any(lessThan(tc, vec2(0.0))) || any(greaterThan(tc, vec2(1.0)));
+  float scene = rfSceneWindowDepth(clamp(tc, 0.0, 1.0));
+  return scene >= 1.0 || depth < scene;
+}
+
 // Nearby opaque geometry (Wyman 2005, seed 001, section 4): where the ray leaving the glass,
 // P + t T, first passes behind the opaque scene captured before the glass, its colour there.
 // The ray is marched in RF_SCENE_STEPS equal steps up to where it leaves the frustum, and a
@@ -121,52 +133,58 @@ bool rfSceneAlong(vec3 P, vec3 T, out vec3 colour)
   vec4 clipP = rfVCDC * vec4(P, 1.0);
   vec4 clipT = rfVCDC * vec4(T, 0.0);
   float dt = tEnd / float(RF_SCENE_STEPS);
+  // The march's loop holds one step and nothing else; a crossing's bisection and test follow
+  // it, once per crossing: inside the loop they ran at every step (llvmpipe runs an if's body
+  // for the whole block of pixels under a mask; only a loop ends once its pixels are done).
+  int i = 0;
   bool wasInFront = false;
-  for (int i = 0; i <= RF_SCENE_STEPS; ++i)
+  while (i <= RF_SCENE_STEPS)
   {
-    float depth;
-    vec2 tc = rfSceneSample(clipP, clipT, float(i) * dt, depth);
-    if (any(lessThan(tc, vec2(0.0))) || any(greaterThan(tc, vec2(1.0))))
+    bool offImage;
+    bool inFront = rfSceneInFrontAt(clipP, clipT, float(i) * dt, offImage);
+    while (!offImage && !(wasInFront && !inFront) && i < RF_SCENE_STEPS)
     {
-      return false;
+      wasInFront = inFront;
+      i = i + 1;
+      inFront = rfSceneInFrontAt(clipP, clipT, float(i) * dt, offImage);
     }
-    float scene = rfSceneWindowDepth(tc);
-    // The background (window depth 1) is behind every point of the frustum.
-    bool inFront = scene >= 1.0 || depth < scene;
-    if (wasInFront && !inFront)
+    if (offImage || !(wasInFront && !inFront))
     {
-      float lo = float(i - 1) * dt;
-      float hi = float(i) * dt;
-      for (int j = 0; j < 6; ++j)
+      return false; // off the image, or the march's end without a crossing
+    }
+    float lo = float(i - 1) * dt;
+    float hi = float(i) * dt;
+    for (int j = 0; j < 6; ++j)
+    {
+      float mid = 0.5 * (lo + hi);
+      float midDepth;
+      float sceneMid = rfSceneWindowDepth(rfSceneSample(clipP, clipT, mid, midDepth));
+      if (sceneMid >= 1.0 || midDepth < sceneMid)
       {
-        float mid = 0.5 * (lo + hi);
-        float midDepth;
-        float sceneMid = rfSceneWindowDepth(rfSceneSample(clipP, clipT, mid, midDepth));
-        if (sceneMid >= 1.0 || midDepth < sceneMid)
-        {
-          lo = mid;
-        }
-        else
-        {
-          hi = mid;
-        }
+        lo = mid;
       }
-      float hitDepth;
-      vec2 hitTC = rfSceneSample(clipP, clipT, hi, hitDepth);
-      float sceneHit = rfSceneWindowDepth(hitTC);
-      if (sceneHit < 1.0)
+      else
       {
-        vec4 s = rfDCVC * vec4(hitTC * 2.0 - 1.0, sceneHit * 2.0 - 1.0, 1.0);
-        float sceneDistance = -s.z / s.w;
-        vec3 H = P + hi * T;
-        if (-H.z - sceneDistance <= abs(dt * T.z) + 1e-4 * sceneDistance)
-        {
-          colour = textureLod(rfSceneColor, hitTC, 0.0).rgb;
-          return true;
-        }
+        hi = mid;
       }
     }
-    wasInFront = inFront;
+    float hitDepth;
+    vec2 hitTC = rfSceneSample(clipP, clipT, hi, hitDepth);
+    float sceneHit = rfSceneWindowDepth(hitTC);
+    if (sceneHit < 1.0)
+    {
+      vec4 s = rfDCVC * vec4(hitTC * 2.0 - 1.0, sceneHit * 2.0 - 1.0, 1.0);
+      float sceneDistance = -s.z / s.w;
+      vec3 H = P + hi * T;
+      if (-H.z - sceneDistance <= abs(dt * T.z) + 1e-4 * sceneDistance)
+      {
+        colour = textureLod(rfSceneColor, hitTC, 0.0).rgb;
+        return true;
+      }
+    }
+    // Passed behind a silhouette: march on from behind it.
+    wasInFront = false;
+    i = i + 1;
   }
   return false;
 }

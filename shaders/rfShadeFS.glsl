@@ -157,9 +157,8 @@ bool rfSceneAlong(vec3 P, vec3 T, out vec3 colour)
     for (int j = 0; j < 6; ++j)
     {
       float mid = 0.5 * (lo + hi);
-      float midDepth;
-      float sceneMid = rfSceneWindowDepth(rfSceneSample(clipP, clipT, mid, midDepth));
-      if (sceneMid >= 1.0 || midDepth < sceneMid)
+      bool midOffImage; // never: between two points on the image
+      if (rfSceneInFrontAt(clipP, clipT, mid, midOffImage))
       {
         lo = mid;
       }

@@ -173,74 +173,72 @@ RF_KERNEL int rfk_peel_next_crossing(rf_layer_stack layers, int count, rfk_camer
     {
       return RF_PEEL_NONE; /* the segment's end, no change of side */
     }
+    rf_float lo = t - dt;
+    rf_float hi = t;
+    for (int j = 0; j < RF_PEEL_BISECTIONS; ++j)
     {
-      rf_float lo = t - dt;
-      rf_float hi = t;
-      for (int j = 0; j < RF_PEEL_BISECTIONS; ++j)
+      rf_float mid = 0.5 * (lo + hi);
+      if (rfk_peel_side_at(layers, count, camera.viewportSize, clipRay, mid) == before)
       {
-        rf_float mid = 0.5 * (lo + hi);
-        if (rfk_peel_side_at(layers, count, camera.viewportSize, clipRay, mid) == before)
-        {
-          lo = mid;
-        }
-        else
-        {
-          hi = mid;
-        }
+        lo = mid;
       }
-      rf_float3 nearQ = rf_add3(P, rf_scale3(T, lo));
-      rf_float3 farQ = rf_add3(P, rf_scale3(T, hi));
-      rf_float2 nearTC;
-      rf_float2 farTC;
-      rfk_peel_on_image(camera, nearQ, RF_ADDR(nearTC));
-      rfk_peel_on_image(camera, farQ, RF_ADDR(farTC));
-      rf_float2 pixels = camera.viewportSize;
-      int farSide = rf_layer_side(layers, count, farTC, pixels, -farQ.z);
-      /* Going deeper the ray passed behind layer farSide - 1; coming forward it passed in
-       * front of layer farSide. */
-      int crossedLayer = farSide > before ? farSide - 1 : farSide;
-      rf_float farDepth = rf_layer_depth(layers, farTC, pixels, crossedLayer);
-      rf_float nearDepth = rf_layer_depth(layers, nearTC, pixels, crossedLayer);
-      /* The paper's fault test: across the final bracket the crossed layer's depth changes by
-       * X; on a surface X shrinks with the bracket, at a fault it stays the jump. */
-      rf_float X = rf_abs(farDepth - nearDepth);
-      rf_float2 moved = rf_mul2(rf_sub2(farTC, start), camera.viewportSize);
-      rf_bool beside =
-        crossedLayer == leftLayer && rf_abs(moved.x) <= 1.0 && rf_abs(moved.y) <= 1.0;
-      if (farDepth > 0.0 && nearDepth > 0.0 && X <= faultSize &&
-        rf_abs(-farQ.z - farDepth) <= faultSize && !beside)
+      else
       {
-        /* Beyond the paper: the crossing placed by one secant step on the bracket (the ray's
-         * depth less the crossed layer's, linear in t where both ends see one texel's depth),
-         * in place of further halvings, which cost a fetch each. */
-        rf_float nearGap = -nearQ.z - nearDepth;
-        rf_float farGap = -farQ.z - farDepth;
-        rf_float share = (nearGap < 0.0) != (farGap < 0.0) ? nearGap / (nearGap - farGap) : 1.0;
-        rf_float3 Q = rf_add3(P, rf_scale3(T, lo + share * (hi - lo)));
-        rf_float2 qTC;
-        rf_bool onImage = rfk_peel_on_image(camera, Q, RF_ADDR(qTC));
-        RF_DEREF(hit) = onImage ? Q : farQ;
-        RF_DEREF(hitTC) = onImage ? qTC : farTC;
-        RF_DEREF(hitLayer) = crossedLayer;
-        return RF_PEEL_SURFACE;
+        hi = mid;
       }
-      if (inside && !(rf_layer_depth(layers, farTC, pixels, 0) > 0.0))
-      {
-        /* Off the glass's footprint from inside: through the layer nearest the ray at the
-         * last texel on the glass (before - 1 in front of it, before behind it). */
-        rf_float depth = -nearQ.z;
-        int front = before > 0 ? before - 1 : 0;
-        rf_float frontDepth = rf_layer_depth(layers, nearTC, pixels, front);
-        rf_float backDepth = before < count ? rf_layer_depth(layers, nearTC, pixels, before) : 0.0;
-        rf_bool useBack = backDepth > 0.0 && (before == 0 || backDepth - depth < depth - frontDepth);
-        RF_DEREF(hit) = rf_scale3(rf_add3(nearQ, farQ), 0.5);
-        RF_DEREF(hitTC) = nearTC;
-        RF_DEREF(hitLayer) = useBack ? before : front;
-        return RF_PEEL_EDGE;
-      }
-      /* A fault zone (the paper's case 2): go on from the side found beyond it. */
-      before = farSide;
     }
+    rf_float3 nearQ = rf_add3(P, rf_scale3(T, lo));
+    rf_float3 farQ = rf_add3(P, rf_scale3(T, hi));
+    rf_float2 nearTC;
+    rf_float2 farTC;
+    rfk_peel_on_image(camera, nearQ, RF_ADDR(nearTC));
+    rfk_peel_on_image(camera, farQ, RF_ADDR(farTC));
+    rf_float2 pixels = camera.viewportSize;
+    int farSide = rf_layer_side(layers, count, farTC, pixels, -farQ.z);
+    /* Going deeper the ray passed behind layer farSide - 1; coming forward it passed in
+     * front of layer farSide. */
+    int crossedLayer = farSide > before ? farSide - 1 : farSide;
+    rf_float farDepth = rf_layer_depth(layers, farTC, pixels, crossedLayer);
+    rf_float nearDepth = rf_layer_depth(layers, nearTC, pixels, crossedLayer);
+    /* The paper's fault test: across the final bracket the crossed layer's depth changes by
+     * X; on a surface X shrinks with the bracket, at a fault it stays the jump. */
+    rf_float X = rf_abs(farDepth - nearDepth);
+    rf_float2 moved = rf_mul2(rf_sub2(farTC, start), camera.viewportSize);
+    rf_bool beside =
+      crossedLayer == leftLayer && rf_abs(moved.x) <= 1.0 && rf_abs(moved.y) <= 1.0;
+    if (farDepth > 0.0 && nearDepth > 0.0 && X <= faultSize &&
+      rf_abs(-farQ.z - farDepth) <= faultSize && !beside)
+    {
+      /* Beyond the paper: the crossing placed by one secant step on the bracket (the ray's
+       * depth less the crossed layer's, linear in t where both ends see one texel's depth),
+       * in place of further halvings, which cost a fetch each. */
+      rf_float nearGap = -nearQ.z - nearDepth;
+      rf_float farGap = -farQ.z - farDepth;
+      rf_float share = (nearGap < 0.0) != (farGap < 0.0) ? nearGap / (nearGap - farGap) : 1.0;
+      rf_float3 Q = rf_add3(P, rf_scale3(T, lo + share * (hi - lo)));
+      rf_float2 qTC;
+      rf_bool onImage = rfk_peel_on_image(camera, Q, RF_ADDR(qTC));
+      RF_DEREF(hit) = onImage ? Q : farQ;
+      RF_DEREF(hitTC) = onImage ? qTC : farTC;
+      RF_DEREF(hitLayer) = crossedLayer;
+      return RF_PEEL_SURFACE;
+    }
+    if (inside && !(rf_layer_depth(layers, farTC, pixels, 0) > 0.0))
+    {
+      /* Off the glass's footprint from inside: through the layer nearest the ray at the
+       * last texel on the glass (before - 1 in front of it, before behind it). */
+      rf_float depth = -nearQ.z;
+      int front = before > 0 ? before - 1 : 0;
+      rf_float frontDepth = rf_layer_depth(layers, nearTC, pixels, front);
+      rf_float backDepth = before < count ? rf_layer_depth(layers, nearTC, pixels, before) : 0.0;
+      rf_bool useBack = backDepth > 0.0 && (before == 0 || backDepth - depth < depth - frontDepth);
+      RF_DEREF(hit) = rf_scale3(rf_add3(nearQ, farQ), 0.5);
+      RF_DEREF(hitTC) = nearTC;
+      RF_DEREF(hitLayer) = useBack ? before : front;
+      return RF_PEEL_EDGE;
+    }
+    /* A fault zone (the paper's case 2): go on from the side found beyond it. */
+    before = farSide;
     i = i + 1;
   }
   return RF_PEEL_NONE;

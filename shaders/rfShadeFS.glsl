@@ -440,16 +440,17 @@ rfRay rfTraceRay(vec2 tc, vec3 N1, float depth, int material, int channel)
 }
 
 // The ray's colour: the environment (or the scene) along its reflected and its transmitted
-// directions, each lookup averaged over the width (radians) its directions spread across the
-// pixel (rfEnvironmentWidth), mixed by Fresnel, tinted along the path inside.
-vec3 rfRayColour(rfRay ray, float reflectedWidth, float transmittedWidth)
+// directions, each lookup averaged over the footprint its directions cover across the pixel
+// (rfFootprintAcrossPixel), mixed by Fresnel, tinted along the path inside.
+vec3 rfRayColour(rfRay ray, vec4 reflectedFootprint, vec4 transmittedFootprint)
 {
 #ifdef RF_FRESNEL
   float F = rfFresnelWeight(-dot(ray.V, ray.N1), ray.etaIn);
 #else
   float F = 0.0;
 #endif
-  rfEnvironmentWidth = transmittedWidth;
+  rfEnvironmentWidth = transmittedFootprint.w;
+  rfEnvironmentAxis = transmittedFootprint.xyz;
   vec3 transmitted = rfTransmittedColour(ray.tc, ray.N1, ray.T1, ray.P2, ray.T2);
 #if defined(RF_METHOD_PEEL) || defined(RF_EXIT_REFLECTION)
   if (ray.branchWeight > 0.0)
@@ -469,7 +470,10 @@ vec3 rfRayColour(rfRay ray, float reflectedWidth, float transmittedWidth)
 #endif
   transmitted *= pow(max(tint, vec3(1.0 / 255.0)), vec3(path / rfAbsorptionDistance));
 #endif
-  rfEnvironmentWidth = reflectedWidth;
+  // The reflected lookup is one lookup across its footprint's short axis: spread along the long
+  // one too it gained 0.1 dB on the torus for a third of the shading's time the long axis adds.
+  rfEnvironmentWidth = reflectedFootprint.w;
+  rfEnvironmentAxis = vec3(0.0);
   vec3 colour = F * rfEnvironment(reflect(ray.V, ray.N1)) + (1.0 - F) * transmitted;
 #ifdef RF_HIGHLIGHTS
   colour += rfHighlight(ray.P1, ray.V, ray.N1, ray.material,
@@ -491,22 +495,31 @@ vec3 rfRayColour(rfRay ray, float reflectedWidth, float transmittedWidth)
 #define RF_LOOKUP_WIDTH_SCALE 1.0
 #endif
 
-// How far a unit direction turns from one pixel to the next, from the screen-space
-// derivatives over the 2x2 block: the smaller of the two axes' turns (where the rays'
-// directions stretch one way, the larger would blur the other way too; measured against the
-// supersampled reference on the benchmark's sphere and torus, the smaller gained 1.4 and 2.2
-// dB, the larger 0.7 and -0.6). A neighbour without glass (no direction: glass 0) does not
-// count. Every pixel of the block must run it (derivatives), so it is called outside any branch
-// that depends on the pixel. 0 without RF_FILTERED_LOOKUPS.
-float rfSpreadAcrossPixel(vec3 direction, float glass)
+// How far a unit direction turns across the pixel, from the screen-space derivatives over the
+// 2x2 block: xyz the turn along the axis it turns most (the long axis of the pixel's
+// footprint, rfEnvironmentAxis), w the turn along the other (the width each lookup is averaged
+// over, rfEnvironmentWidth). One width for both axes read worse: against the supersampled
+// reference on the benchmark's sphere and torus the smaller of the two gained 1.4 and 2.2 dB,
+// the larger 0.7 and -0.6 (it blurs across what the rays resolve); lookups spread along the
+// long axis at the smaller width gained another 0.3-0.5 and 1.3 dB (docs/benchmark.md,
+// *Lookups along the footprint's long axis*). A neighbour without glass (no direction: glass
+// 0) does not count. Every pixel of the block must run it (derivatives), so it is called
+// outside any branch that depends on the pixel. 0 without RF_FILTERED_LOOKUPS.
+vec4 rfFootprintAcrossPixel(vec3 direction, float glass)
 {
 #ifdef RF_FILTERED_LOOKUPS
-  float across = dFdx(glass) == 0.0 ? length(dFdx(direction)) : 0.0;
-  float down = dFdy(glass) == 0.0 ? length(dFdy(direction)) : 0.0;
-  float spread = RF_LOOKUP_WIDTH_SCALE * min(across, down);
-  return spread >= 0.0 ? min(spread, RF_MAX_LOOKUP_WIDTH) : 0.0; // NaN: none
+  vec3 across = dFdx(glass) == 0.0 ? dFdx(direction) : vec3(0.0);
+  vec3 down = dFdy(glass) == 0.0 ? dFdy(direction) : vec3(0.0);
+  float acrossTurn = length(across);
+  float downTurn = length(down);
+  float width = RF_LOOKUP_WIDTH_SCALE * min(acrossTurn, downTurn);
+  vec3 axis = RF_LOOKUP_WIDTH_SCALE * (acrossTurn > downTurn ? across : down);
+  float span = length(axis);
+  axis = span > RF_MAX_LOOKUP_WIDTH ? axis * (RF_MAX_LOOKUP_WIDTH / span) : axis;
+  return width >= 0.0 && span >= 0.0 ? vec4(axis, min(width, RF_MAX_LOOKUP_WIDTH))
+                                      : vec4(0.0); // NaN: none
 #else
-  return 0.0;
+  return vec4(0.0);
 #endif
 }
 
@@ -515,7 +528,7 @@ float rfSpreadAcrossPixel(vec3 direction, float glass)
 // index; the green one is the ray of the debug output), how much each ray's directions
 // spread across the pixel, then the lookups over that width; and whether the ray was totally
 // reflected inside the glass. Every pixel of the 2x2 block must call it, glass or not
-// (rfSpreadAcrossPixel).
+// (rfFootprintAcrossPixel).
 vec3 rfShadeColour(bool glass, vec2 tc, vec3 N1, float depth, int material,
   out bool reflectedInside)
 {
@@ -534,20 +547,20 @@ vec3 rfShadeColour(bool glass, vec2 tc, vec3 N1, float depth, int material,
   }
   reflectedInside = ray.reflectedInside;
   float defined = glass ? 1.0 : 0.0;
-  float transmittedWidth = rfSpreadAcrossPixel(ray.T2, defined);
-  float reflectedWidth = rfSpreadAcrossPixel(reflect(ray.V, ray.N1), defined);
+  vec4 transmittedFootprint = rfFootprintAcrossPixel(ray.T2, defined);
+  vec4 reflectedFootprint = rfFootprintAcrossPixel(reflect(ray.V, ray.N1), defined);
 #ifdef RF_DISPERSION
-  float redWidth = rfSpreadAcrossPixel(red.T2, defined);
-  float blueWidth = rfSpreadAcrossPixel(blue.T2, defined);
+  vec4 redFootprint = rfFootprintAcrossPixel(red.T2, defined);
+  vec4 blueFootprint = rfFootprintAcrossPixel(blue.T2, defined);
 #endif
   if (!glass)
   {
     return vec3(0.0);
   }
-  vec3 colour = rfRayColour(ray, reflectedWidth, transmittedWidth);
+  vec3 colour = rfRayColour(ray, reflectedFootprint, transmittedFootprint);
 #ifdef RF_DISPERSION
-  colour.r = rfRayColour(red, reflectedWidth, redWidth).r;
-  colour.b = rfRayColour(blue, reflectedWidth, blueWidth).b;
+  colour.r = rfRayColour(red, reflectedFootprint, redFootprint).r;
+  colour.b = rfRayColour(blue, reflectedFootprint, blueFootprint).b;
 #endif
   return colour;
 }

@@ -43,7 +43,8 @@ vec3 rfEnvironmentLookup(vec3 directionVC)
 // of lookups spaced along that axis, each as wide as the spacing (at least rfEnvironmentWidth),
 // as a GPU's anisotropic filtering does; else one lookup rfEnvironmentWidth wide. A single
 // lookup as wide as the long axis would blur across what the rays resolve, one as wide as the
-// short axis aliases along the long one (the speckled band along the torus's rim).
+// short axis aliases along the long one (speckle in the rings inside the torus's
+// hole and along its rims).
 vec3 rfEnvironment(vec3 directionVC)
 {
   float width = rfEnvironmentWidth;

@@ -501,7 +501,7 @@ vec3 rfRayColour(rfRay ray, vec4 reflectedFootprint, vec4 transmittedFootprint)
 // over, rfEnvironmentWidth). One width for both axes read worse: against the supersampled
 // reference on the benchmark's sphere and torus the smaller of the two gained 1.4 and 2.2 dB,
 // the larger 0.7 and -0.6 (it blurs across what the rays resolve); lookups spread along the
-// long axis at the smaller width gained another 0.3-0.5 and 1.3 dB (docs/benchmark.md,
+// long axis at the smaller width gained another 0.9-1.0 dB on the torus (docs/benchmark.md,
 // *Lookups along the footprint's long axis*). A neighbour without glass (no direction: glass
 // 0) does not count. Every pixel of the block must run it (derivatives), so it is called
 // outside any branch that depends on the pixel. 0 without RF_FILTERED_LOOKUPS.

@@ -565,13 +565,43 @@ bool vtkRefractionGeometryStage::PreReplaceShaderValues(std::string& vertexShade
 }
 
 //------------------------------------------------------------------------------
-bool vtkRefractionGeometryStage::PostReplaceShaderValues(std::string&, std::string&,
-  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
+bool vtkRefractionGeometryStage::PostReplaceShaderValues(std::string& vertexShader,
+  std::string& geometryShader, std::string& fragmentShader, vtkAbstractMapper* mapper,
+  vtkProp* prop)
 {
   if (!IsGlassMapper(mapper, prop))
   {
     return true;
   }
+  const bool replaced = this->ReplaceGlassShaderValues(fragmentShader);
+  // Last: VTK 9.1's mapper crashes on a program its cache cannot build.
+  vtkOpenGLRenderWindow* renWin = this->Renderer
+    ? vtkOpenGLRenderWindow::SafeDownCast(this->Renderer->GetRenderWindow())
+    : nullptr;
+  const bool builds =
+    this->ProgramGuard->Check(renWin, prop, vertexShader, geometryShader, fragmentShader);
+  this->BuildFailures.erase(std::remove_if(this->BuildFailures.begin(),
+                               this->BuildFailures.end(),
+                               [](const vtkWeakPointer<vtkProp>& p) { return !p; }),
+    this->BuildFailures.end());
+  auto reported = std::find(this->BuildFailures.begin(), this->BuildFailures.end(), prop);
+  if (builds && reported != this->BuildFailures.end())
+  {
+    this->BuildFailures.erase(reported);
+  }
+  else if (!builds && reported == this->BuildFailures.end())
+  {
+    this->BuildFailures.push_back(prop);
+    vtkErrorMacro("Glass prop " << prop->GetClassName() << " " << prop
+                                << ": its glass shader does not build (the shader program's "
+                                   "error above): the prop is not drawn.");
+  }
+  return replaced; // a program that does not build is reported above
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionGeometryStage::ReplaceGlassShaderValues(std::string& fragmentShader)
+{
   const std::string source = rfGeometryFSSource;
   const size_t marker = source.find(kImplMarker);
   std::string declarations = source.substr(0, marker);
@@ -586,11 +616,16 @@ bool vtkRefractionGeometryStage::PostReplaceShaderValues(std::string&, std::stri
   // The data's colour as VTK's colour code leaves it: with EdgeVisibility, VTK has already
   // mixed the edge colour in by `emix` (into ambient and diffuse, or ambient alone unlit), and
   // the G-buffer keeps emix too, so that the shading stage draws the edges over the glass.
+  // Its alpha is 1, not the actor's opacity: VTK discards fragments of alpha 0 after the
+  // colour code, and glass is drawn only where the actor is opaque. With a backface property
+  // VTK takes the back faces' opacity from a uniform it sets only while the program uses the
+  // back faces' colour, which a G-buffer draw that keeps no colour does not: the uniform stayed
+  // 0, and every back face of the capture was discarded.
   const bool haveColour = fragmentShader.find("vec3 diffuseColor") != std::string::npos &&
     fragmentShader.find("vec3 ambientColor") != std::string::npos;
   defines << this->Defines << (this->CompositeProgram ? "#define RF_SAMPLE_COMPOSITE\n" : "")
           << "#define RF_DATA_COLOUR "
-          << (haveColour ? "vec4(ambientColor + diffuseColor, opacity)" : "vec4(1.0)")
+          << (haveColour ? "vec4(ambientColor + diffuseColor, 1.0)" : "vec4(1.0)")
           << "\n#define RF_EDGE_MIX "
           << (fragmentShader.find("float emix") != std::string::npos ? "emix" : "0.0")
           << "\n#define RF_POSITION_VC "

@@ -15,6 +15,7 @@
 #include "vtkOpenGLRenderPass.h"
 #include "vtkNew.h"       // For members
 #include "vtkRefractionPieceSheets.h" // For members
+#include "vtkRefractionProgramGuard.h" // For members
 #include "vtkRefractionSHTransfer.h" // For members
 #include "vtkRefractionSurfaceModel.h" // For members
 #include "vtkWeakPointer.h" // For members
@@ -168,6 +169,9 @@ private:
   bool IsOutwardFront(vtkProp* prop);
   void CullHiddenFaces(vtkProp* prop);
   void MapNormalDistance(vtkProp* prop);
+  /// Our code into the glass mapper's finished fragment shader; false where its tags are
+  /// missing.
+  bool ReplaceGlassShaderValues(std::string& fragmentShader);
 
   std::vector<vtkProp*> Glass;
   std::map<vtkProp*, int> MaterialIndex;
@@ -202,6 +206,9 @@ private:
   int Origin[2] = { 0, 0 };
   std::string Defines;
   vtkTimeStamp DefinesTime;
+  vtkNew<vtkRefractionProgramGuard> ProgramGuard;
+  /// Props whose glass program did not build, reported once until it builds again.
+  std::vector<vtkWeakPointer<vtkProp>> BuildFailures;
 };
 
 #endif

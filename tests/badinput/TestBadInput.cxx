@@ -19,6 +19,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkProperty.h>
+#include <vtkShaderProperty.h>
 #include <vtkVertexGlyphFilter.h>
 
 #include <cstdlib>
@@ -410,6 +411,48 @@ int TranslucentGlass(MessageLog* log, const std::string&)
 int TranslucentAfterGlass(MessageLog* log, const std::string&)
 {
   return Translucent(log, true);
+}
+
+// A glass actor whose program does not build: its own shader replacement is not GLSL, applied
+// before the render passes' (`first`) or after them. VTK 9.1's mapper dereferences a program
+// its cache could not build, so without the pass's guard this crashed (plain VTK crashes on
+// the same replacement); now one error names the actor, the rest of the scene renders as
+// without it, and with the replacement taken away it is glass again.
+int ShaderDoesNotBuild(MessageLog* log, bool first)
+{
+  auto poly = Sphere(-1.2, 0.7);
+  Rig rig(kSize, kSize);
+  AddRest(rig);
+  auto subject = ActorFor(poly);
+  RF_REQUIRE(vtkRefractionPass::MakeGlass(subject, 1.5), "MakeGlass refused a valid IOR");
+  rftest::WithoutHighlights(subject);
+  subject->GetShaderProperty()->AddFragmentShaderReplacement(
+    "//VTK::Normal::Dec", first, "//VTK::Normal::Dec\n  this is not GLSL;\n", false);
+  rig.Renderer->AddActor(subject);
+  Look(rig);
+  const Frame reference = Reference(nullptr);
+  if (CheckScene(log, rig, "error",
+        { subject->GetClassName(), Address(subject.Get()), "glass shader does not build",
+          "not drawn" },
+        reference) != EXIT_SUCCESS)
+  {
+    return EXIT_FAILURE;
+  }
+  subject->GetShaderProperty()->ClearAllFragmentShaderReplacements();
+  const Frame repaired = rig.Render();
+  RF_REQUIRE(repaired.GLErrors == 0, "OpenGL error after the replacement was taken away");
+  const int glass = GlassPixels(repaired) - GlassPixels(reference);
+  std::printf("glass pixels with the replacement taken away: %d more\n", glass);
+  RF_REQUIRE(glass > 500, "the actor is not glass again without the replacement");
+  return EXIT_SUCCESS;
+}
+int ShaderDoesNotBuildFirst(MessageLog* log, const std::string&)
+{
+  return ShaderDoesNotBuild(log, true);
+}
+int ShaderDoesNotBuildAfter(MessageLog* log, const std::string&)
+{
+  return ShaderDoesNotBuild(log, false);
 }
 
 // A glass sphere whose polydata also holds a line and a vertex (cells of mixed types) and

@@ -44,6 +44,21 @@ bool HasDataColour(vtkProp* prop)
   {
     return true;
   }
+  // A texture that VTK's colour code applies to the colour (the actor's, or the property's
+  // other than the PBR maps, which its lighting code reads).
+  if (actor->GetTexture())
+  {
+    return true;
+  }
+  for (const auto& texture : property->GetAllTextures())
+  {
+    if (texture.first != "albedoTex" && texture.first != "normalTex" &&
+      texture.first != "materialTex" && texture.first != "emissiveTex" &&
+      texture.first != "anisotropyTex")
+    {
+      return true;
+    }
+  }
   // Per-block colours of composite data (vtkCompositeDataDisplayAttributes), or scalars in
   // the data (any block).
   vtkMapper* mapper = actor->GetMapper();

@@ -20,6 +20,7 @@
 #include "vtkRefractionOpaqueStep.h"
 #include "vtkRefractionRankExchange.h"
 #include "vtkRefractionSampleComposite.h"
+#include "vtkRefractionSelectionPass.h"
 #include "vtkRefractionSHTransfer.h"
 #include "vtkRefractionShadeStage.h"
 #include "vtkRefractionStageTimers.h"
@@ -32,6 +33,7 @@
 #include "rf_validate.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
 #include <cstdio>
 
 vtkStandardNewMacro(vtkRefractionPass);
@@ -191,6 +193,11 @@ void vtkRefractionPass::Render(const vtkRenderState* s)
     vtkNew<vtkRenderStepsPass> steps;
     this->SetDelegatePass(steps);
   }
+  if (s->GetRenderer()->GetSelector())
+  {
+    this->RenderSelection(s);
+    return;
+  }
   if (this->OpaqueStep)
   {
     // The steps pass calls back RenderOpaqueAndGlass in place of its opaque step.
@@ -218,6 +225,32 @@ void vtkRefractionPass::Render(const vtkRenderState* s)
   this->DelegatePass->Render(&othersState);
   this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
   this->RenderGlass(s, glass, !others.empty());
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionPass::RenderSelection(const vtkRenderState* s)
+{
+  // The props the frame would draw, glass included, in their order; the glass props the
+  // checker refuses stay out, as in a frame.
+  std::vector<vtkProp*> glass;
+  std::vector<vtkProp*> others;
+  this->GlassChecker->SplitProps(s, glass, &others, false);
+  std::vector<vtkProp*> props;
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    vtkProp* prop = s->GetPropArray()[i];
+    if (std::find(glass.begin(), glass.end(), prop) != glass.end() ||
+      std::find(others.begin(), others.end(), prop) != others.end())
+    {
+      props.push_back(prop);
+    }
+  }
+  vtkRenderState selection(s->GetRenderer());
+  selection.SetFrameBuffer(s->GetFrameBuffer());
+  selection.SetRequiredKeys(s->GetRequiredKeys());
+  selection.SetPropArrayAndCount(props.data(), static_cast<int>(props.size()));
+  this->SelectionPass->Render(&selection);
+  this->NumberOfRenderedProps = this->SelectionPass->GetNumberOfRenderedProps();
 }
 
 //------------------------------------------------------------------------------
@@ -596,6 +629,7 @@ void vtkRefractionPass::ReleaseGraphicsResources(vtkWindow* w)
     this->DelegatePass->ReleaseGraphicsResources(w);
   }
   this->GeometryStage->ReleaseGraphicsResources(w);
+  this->SelectionPass->ReleaseGraphicsResources(w);
   this->DepthRange->ReleaseGraphicsResources(w);
   this->LayerPack->ReleaseGraphicsResources(w);
   this->ShadeStage->ReleaseGraphicsResources(w);

@@ -58,6 +58,7 @@ class vtkRefractionMethod;
 class vtkRefractionOpaqueStep;
 class vtkRefractionRankExchange;
 class vtkRefractionSampleComposite;
+class vtkRefractionSelectionPass;
 class vtkRefractionShadeStage;
 class vtkRefractionStageTimers;
 class vtkRefractionTargets;
@@ -582,6 +583,9 @@ protected:
 
   friend class vtkRefractionOpaqueStep;
   int RenderOpaqueAndGlass(const vtkRenderState* s, vtkRenderPass* opaque);
+  /// While the renderer has a hardware selector: every prop drawn into it, the glass as its
+  /// surface (vtkRefractionSelectionPass).
+  void RenderSelection(const vtkRenderState* s);
   void RenderGlass(const vtkRenderState* s, std::vector<vtkProp*>& glass, bool opaqueScene);
   void CaptureScene(vtkOpenGLRenderer* ren, bool depth);
   /**
@@ -643,6 +647,7 @@ protected:
   int NumberOfGlassProps = 0;
 
   vtkNew<vtkRefractionGlassChecker> GlassChecker;
+  vtkNew<vtkRefractionSelectionPass> SelectionPass;
   vtkNew<vtkRefractionTargets> Targets;
   vtkNew<vtkRefractionGeometryStage> GeometryStage;
   vtkNew<vtkRefractionDepthRange> DepthRange;

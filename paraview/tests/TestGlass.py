@@ -21,17 +21,22 @@ Cases
   viewfeatures  the glass view draws opaque and translucent data as ParaView's Render View
               does, with FXAA, SSAO, tone mapping and the orientation axes each flipped (each
               changes the Render View's picture, so the comparison is not empty).
+  selection   selecting cells on the surface over the whole view selects the same cells of
+              the glass and of the opaque wall in the glass view as in ParaView's Render View
+              (the glass picked as its surface).
 """
 import os
 import sys
 
 import numpy
 
-from paraview.simple import (Calculator, ColorBy, Contour, CreateView, Delete,
+from paraview import servermanager
+from paraview.simple import (Calculator, ClearSelection, ColorBy, Contour, CreateView, Delete,
                              GetAnimationScene, GetRenderViews, GroupDatasets, Hide, LoadPlugin,
                              LoadState, Plane, ProgrammableSource, PVDReader, Render,
-                             ResetSession, SaveData, SaveScreenshot, SaveState, SetActiveView,
-                             Show, Sphere, Tetrahedralize, Wavelet)
+                             ResetSession, SaveData, SaveScreenshot, SaveState,
+                             SelectSurfaceCells, SetActiveView, Show, Sphere, Tetrahedralize,
+                             Wavelet)
 
 # The shared helpers next to this script, whatever folders pvbatch or pvpython put on the path.
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -454,9 +459,51 @@ def case_viewfeatures(scene):
     scene.view = glass_view
 
 
+def selected_ids(source):
+    """The ids of the selection on a source (the selection source's IDs), or []."""
+    selection = source.SMProxy.GetSelectionInput(0)
+    if selection is None:
+        return []
+    return list(servermanager._getPyProxy(selection).IDs)
+
+
+def case_selection(scene):
+    glass_view = scene.view
+    plain_view = CreateView("RenderView")
+    plain_view.ViewSize = [SIZE, SIZE]
+    plain_view.OrientationAxesVisibility = 0
+    plane = Plane(Origin=[-20, -20, -15], Point1=[20, -20, -15], Point2=[-20, 20, -15],
+                  XResolution=40, YResolution=40)
+    glass_source = blob()
+    Show(plane, plain_view)
+    Show(glass_source, plain_view)
+    Show(plane, glass_view)
+    show_glass(glass_source, glass_view)
+    selected = {}
+    for view in (plain_view, glass_view):
+        view.CameraPosition = [0.0, 0.0, 45.0]
+        view.CameraFocalPoint = [0.0, 0.0, 0.0]
+        view.CameraViewUp = [0.0, 1.0, 0.0]
+        scene.view = view
+        scene.picture("selection_%s" % view.GetXMLName())
+        SelectSurfaceCells(Rectangle=[0, 0, SIZE - 1, SIZE - 1], View=view)
+        selected[view.GetXMLName()] = (selected_ids(glass_source), selected_ids(plane))
+        ClearSelection(glass_source)
+        ClearSelection(plane)
+    scene.view = glass_view
+    plain = selected["RenderView"]
+    glass = selected[glass_view.GetXMLName()]
+    for index, name in enumerate(("contour", "wall")):
+        print("%s: %d ids selected in the Render View, %d in the glass view"
+              % (name, len(plain[index]), len(glass[index])))
+        check_that(len(plain[index]) > 0, "the Render View selects cells of the %s" % name)
+        check_that(glass[index] == plain[index], "the glass view selects the %s's cells as "
+                   "the Render View does" % name)
+
+
 CASES = {"scene": case_scene, "types": case_types, "colour": case_colour,
          "properties": case_properties, "timeseries": case_timeseries, "state": case_state,
-         "viewfeatures": case_viewfeatures}
+         "viewfeatures": case_viewfeatures, "selection": case_selection}
 
 if len(sys.argv) != 4 or sys.argv[1] not in CASES:
     raise RuntimeError(__doc__)

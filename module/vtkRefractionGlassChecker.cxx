@@ -1,13 +1,17 @@
 #include "vtkRefractionGlassChecker.h"
 
 #include "vtkActor.h"
+#include "vtkAssembly.h"
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkMapper.h"
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkProp.h"
+#include "vtkProp3DCollection.h"
+#include "vtkPropAssembly.h"
 #include "vtkPropCollection.h"
 #include "vtkProperty.h"
 #include "vtkRefractionGlassKeys.h"
@@ -20,8 +24,11 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <set>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 vtkStandardNewMacro(vtkRefractionGlassChecker);
 
@@ -74,6 +81,7 @@ void vtkRefractionGlassChecker::SplitProps(const vtkRenderState* s,
       glass.push_back(prop);
     }
   }
+  this->CheckAssemblies(s);
   // Glass props the renderer culled never reach the prop array (an empty vtkPolyData has no
   // bounds and is culled first): they still deserve their message, once (CheckGlassProp).
   vtkPropCollection* viewProps = s->GetRenderer() ? s->GetRenderer()->GetViewProps() : nullptr;
@@ -112,6 +120,58 @@ void vtkRefractionGlassChecker::SplitProps(const vtkRenderState* s,
   {
     this->GlassChecks.clear(); // entries of props that went away
     this->WarnedOpacity.clear();
+    this->WarnedAssemblyParts.clear();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionGlassChecker::CheckAssemblies(const vtkRenderState* s)
+{
+  // An assembly draws its parts itself, each with the assembly's matrix poked into it, so a
+  // part never comes to the pass as a prop of its own: marked glass, it is drawn as the
+  // assembly draws it. Said once per part.
+  std::vector<std::pair<vtkProp*, vtkProp*>> stack; // (part, its outermost assembly)
+  for (int i = 0; i < s->GetPropArrayCount(); ++i)
+  {
+    stack.emplace_back(s->GetPropArray()[i], s->GetPropArray()[i]);
+  }
+  std::set<vtkProp*> seen;
+  while (!stack.empty())
+  {
+    vtkProp* prop = stack.back().first;
+    vtkProp* assembly = stack.back().second;
+    stack.pop_back();
+    if (!seen.insert(prop).second)
+    {
+      continue;
+    }
+    vtkPropCollection* parts = nullptr;
+    if (auto* a = vtkAssembly::SafeDownCast(prop))
+    {
+      parts = a->GetParts();
+    }
+    else if (auto* pa = vtkPropAssembly::SafeDownCast(prop))
+    {
+      parts = pa->GetParts();
+    }
+    if (parts)
+    {
+      vtkCollectionSimpleIterator it;
+      parts->InitTraversal(it);
+      while (vtkProp* part = parts->GetNextProp(it))
+      {
+        stack.emplace_back(part, assembly);
+      }
+    }
+    else if (prop != assembly && vtkRefractionGlassKeys::IsGlass(prop) &&
+      this->WarnedAssemblyParts.insert(prop).second)
+    {
+      vtkWarningMacro("Glass prop " << prop->GetClassName() << " " << prop << " is a part of "
+                                    << assembly->GetClassName() << " " << assembly
+                                    << ", which draws its parts itself: it is drawn as an "
+                                       "ordinary actor. Add it to the renderer to make it "
+                                       "glass (with the assembly's matrix as its user matrix).");
+    }
   }
 }
 
@@ -183,6 +243,18 @@ int vtkRefractionGlassChecker::CheckGlassProp(vtkProp* prop)
     vtkErrorMacro("Glass prop " << prop->GetClassName() << " " << prop
                                 << " has index of refraction " << ior << ": "
                                 << rf_status_message(status) << ". It is drawn as opaque.");
+    check.Verdict = GLASS_AS_ORDINARY;
+    return check.Verdict;
+  }
+  if (mapper && !vtkPolyDataMapper::SafeDownCast(mapper))
+  {
+    // A vtkGlyph3DMapper, say: its surfaces are made while it draws, out of the glass stages'
+    // reach (the geometry they capture and the surface model are a polydata's).
+    vtkWarningMacro("Glass prop " << prop->GetClassName() << " " << prop << " is drawn by a "
+                                  << mapper->GetClassName()
+                                  << ": glass needs a vtkPolyDataMapper or a "
+                                     "vtkCompositePolyDataMapper2 (vtkGlyph3D makes glyphs a "
+                                     "polydata); it is drawn as an ordinary actor.");
     check.Verdict = GLASS_AS_ORDINARY;
     return check.Verdict;
   }

@@ -15,6 +15,7 @@
 #include "vtkObject.h"
 
 #include <map>    // For members
+#include <set>    // For members
 #include <string> // For CheckMesh
 #include <vector> // For SplitProps
 
@@ -75,8 +76,11 @@ private:
   bool QuietEmpty = false; ///< an empty piece is ordinary across ranks: no warning
   // Says once per prop that a translucent glass actor is left to VTK's translucent pass.
   void CheckOpacity(vtkProp* prop);
+  // Says once per part that a glass prop inside an assembly is drawn as the assembly draws it.
+  void CheckAssemblies(const vtkRenderState* s);
   std::map<vtkProp*, GlassCheck> GlassChecks;
   std::map<vtkProp*, double> WarnedOpacity;
+  std::set<vtkProp*> WarnedAssemblyParts;
 };
 
 #endif

@@ -12,13 +12,16 @@
 #include "vtkRefractionImageIO.h"
 #endif
 
+#include <vtkAssembly.h>
 #include <vtkCellArray.h>
+#include <vtkGlyph3DMapper.h>
 #include <vtkInformation.h>
 #include <vtkInformationDoubleKey.h>
 #include <vtkInformationIntegerKey.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkProperty.h>
+#include <vtkSphereSource.h>
 #include <vtkShaderProperty.h>
 #include <vtkVertexGlyphFilter.h>
 
@@ -411,6 +414,69 @@ int TranslucentGlass(MessageLog* log, const std::string&)
 int TranslucentAfterGlass(MessageLog* log, const std::string&)
 {
   return Translucent(log, true);
+}
+
+// Glass the pass cannot draw as glass, drawn as an ordinary actor with one warning:
+//   glyph_mapper   glass on a vtkGlyph3DMapper's actor (its glyphs are made while it draws)
+//   assembly_part  glass on a part of a vtkAssembly (the assembly draws its parts itself)
+vtkSmartPointer<vtkActor> GlyphActor()
+{
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(-1.5, -0.3, 0.0);
+  points->InsertNextPoint(-0.8, 0.3, 0.0);
+  vtkNew<vtkPolyData> centres;
+  centres->SetPoints(points);
+  vtkNew<vtkSphereSource> glyph;
+  glyph->SetRadius(0.3);
+  vtkNew<vtkGlyph3DMapper> mapper;
+  mapper->SetInputData(centres);
+  mapper->SetSourceConnection(glyph->GetOutputPort());
+  mapper->ScalingOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+int GlyphMapper(MessageLog* log, const std::string&)
+{
+  Rig rig(kSize, kSize);
+  AddRest(rig);
+  auto subject = GlyphActor();
+  RF_REQUIRE(vtkRefractionPass::MakeGlass(subject, 1.5), "MakeGlass refused a valid IOR");
+  rftest::WithoutHighlights(subject);
+  rig.Renderer->AddActor(subject);
+  Look(rig);
+  Rig plain(kSize, kSize);
+  AddRest(plain);
+  plain.Renderer->AddActor(GlyphActor());
+  Look(plain);
+  const Frame reference = plain.Render();
+  return CheckScene(log, rig, "warning",
+    { Address(subject.Get()), "vtkOpenGLGlyph3DMapper", "drawn as an ordinary actor" },
+    reference);
+}
+int AssemblyPart(MessageLog* log, const std::string&)
+{
+  auto poly = Sphere(-1.2, 0.7);
+  Rig rig(kSize, kSize);
+  AddRest(rig);
+  auto part = ActorFor(poly);
+  RF_REQUIRE(vtkRefractionPass::MakeGlass(part, 1.5), "MakeGlass refused a valid IOR");
+  rftest::WithoutHighlights(part);
+  vtkNew<vtkAssembly> assembly;
+  assembly->AddPart(part);
+  rig.Renderer->AddActor(assembly);
+  Look(rig);
+  Rig plain(kSize, kSize);
+  AddRest(plain);
+  vtkNew<vtkAssembly> plainAssembly;
+  plainAssembly->AddPart(ActorFor(poly));
+  plain.Renderer->AddActor(plainAssembly);
+  Look(plain);
+  const Frame reference = plain.Render();
+  return CheckScene(log, rig, "warning",
+    { Address(part.Get()), "is a part of vtkAssembly", Address(assembly.Get()),
+      "drawn as an ordinary actor" },
+    reference);
 }
 
 // A glass actor whose program does not build: its own shader replacement is not GLSL, applied

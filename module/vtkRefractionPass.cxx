@@ -26,6 +26,7 @@
 #include "vtkRefractionStageTimers.h"
 #include "vtkRefractionSurfaceModel.h"
 #include "vtkRefractionTargets.h"
+#include "vtkRefractionTranslucentStep.h"
 #include "vtkRenderState.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkTextureObject.h"
@@ -191,6 +192,10 @@ void vtkRefractionPass::Render(const vtkRenderState* s)
   if (!this->DelegatePass)
   {
     vtkNew<vtkRenderStepsPass> steps;
+    // Translucent geometry as VTK's renderer draws it without a pass (depth peeling or
+    // order-independent translucency), not unsorted.
+    vtkNew<vtkRefractionTranslucentStep> translucent;
+    steps->SetTranslucentPass(translucent);
     this->SetDelegatePass(steps);
   }
   if (s->GetRenderer()->GetSelector())

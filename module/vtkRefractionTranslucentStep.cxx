@@ -1,0 +1,91 @@
+#include "vtkRefractionTranslucentStep.h"
+
+#include "vtkDualDepthPeelingPass.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderer.h"
+#include "vtkOrderIndependentTranslucentPass.h"
+#include "vtkRenderState.h"
+#include "vtkTranslucentPass.h"
+
+vtkStandardNewMacro(vtkRefractionTranslucentStep);
+
+//------------------------------------------------------------------------------
+vtkRefractionTranslucentStep::vtkRefractionTranslucentStep() = default;
+vtkRefractionTranslucentStep::~vtkRefractionTranslucentStep() = default;
+
+//------------------------------------------------------------------------------
+void vtkRefractionTranslucentStep::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Peeling: " << (this->Peeling ? this->Peeling->GetClassName() : "none")
+     << "\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionTranslucentStep::Render(const vtkRenderState* s)
+{
+  // What vtkOpenGLRenderer::DeviceRenderTranslucentPolygonalGeometry does (VTK 9.1), with
+  // the state's props instead of all of the renderer's.
+  auto* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  vtkRenderPass* pass = nullptr;
+  if (s->GetFrameBuffer())
+  {
+    // Inside another pass's framebuffer (a vtkFramebufferPass, say): what a vtkRenderStepsPass
+    // does there. Those passes' own targets are what VTK's peeling and order-independent
+    // passes would have to match (a float colour target left GL_INVALID_OPERATION).
+    if (!this->Unsorted)
+    {
+      this->Unsorted = vtkSmartPointer<vtkTranslucentPass>::New();
+    }
+    pass = this->Unsorted;
+  }
+  else if (ren && ren->GetUseDepthPeeling())
+  {
+    if (!this->Peeling)
+    {
+      if (ren->IsDualDepthPeelingSupported())
+      {
+        this->Peeling = vtkSmartPointer<vtkDualDepthPeelingPass>::New();
+      }
+      else
+      {
+        this->Peeling = vtkSmartPointer<vtkDepthPeelingPass>::New();
+      }
+      vtkNew<vtkTranslucentPass> translucent;
+      this->Peeling->SetTranslucentPass(translucent);
+    }
+    this->Peeling->SetMaximumNumberOfPeels(ren->GetMaximumNumberOfPeels());
+    this->Peeling->SetOcclusionRatio(ren->GetOcclusionRatio());
+    pass = this->Peeling;
+  }
+  else
+  {
+    if (!this->OrderIndependent)
+    {
+      this->OrderIndependent = vtkSmartPointer<vtkOrderIndependentTranslucentPass>::New();
+      vtkNew<vtkTranslucentPass> translucent;
+      this->OrderIndependent->SetTranslucentPass(translucent);
+    }
+    pass = this->OrderIndependent;
+  }
+  pass->Render(s);
+  this->NumberOfRenderedProps = pass->GetNumberOfRenderedProps();
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionTranslucentStep::ReleaseGraphicsResources(vtkWindow* w)
+{
+  if (this->Peeling)
+  {
+    this->Peeling->ReleaseGraphicsResources(w);
+  }
+  if (this->OrderIndependent)
+  {
+    this->OrderIndependent->ReleaseGraphicsResources(w);
+  }
+  if (this->Unsorted)
+  {
+    this->Unsorted->ReleaseGraphicsResources(w);
+  }
+}

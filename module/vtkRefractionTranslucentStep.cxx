@@ -3,10 +3,12 @@
 #include "vtkDualDepthPeelingPass.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLFXAAFilter.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOrderIndependentTranslucentPass.h"
 #include "vtkRenderState.h"
 #include "vtkTranslucentPass.h"
+#include "vtk_glew.h"
 
 vtkStandardNewMacro(vtkRefractionTranslucentStep);
 
@@ -26,7 +28,7 @@ void vtkRefractionTranslucentStep::PrintSelf(ostream& os, vtkIndent indent)
 void vtkRefractionTranslucentStep::Render(const vtkRenderState* s)
 {
   // What vtkOpenGLRenderer::DeviceRenderTranslucentPolygonalGeometry does (VTK 9.1), with
-  // the state's props instead of all of the renderer's.
+  // the state's props instead of all of the renderer's; then the renderer's FXAA.
   auto* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   vtkRenderPass* pass = nullptr;
   if (s->GetFrameBuffer())
@@ -71,6 +73,24 @@ void vtkRefractionTranslucentStep::Render(const vtkRenderState* s)
   }
   pass->Render(s);
   this->NumberOfRenderedProps = pass->GetNumberOfRenderedProps();
+  // The renderer's FXAA comes next, before volumes and overlays (vtkRenderer::UpdateGeometry);
+  // with a render pass set VTK skips it. Not in a multisampled framebuffer, whose samples
+  // already smooth the edges: there VTK 9.1's FXAA copies from it and leaves
+  // GL_INVALID_OPERATION (without the pass too).
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  if (ren && ren->GetUseFXAA() && !s->GetFrameBuffer() && samples <= 1)
+  {
+    if (!this->FXAA)
+    {
+      this->FXAA = vtkSmartPointer<vtkOpenGLFXAAFilter>::New();
+    }
+    if (ren->GetFXAAOptions())
+    {
+      this->FXAA->UpdateConfiguration(ren->GetFXAAOptions());
+    }
+    this->FXAA->Execute(ren);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -87,5 +107,9 @@ void vtkRefractionTranslucentStep::ReleaseGraphicsResources(vtkWindow* w)
   if (this->Unsorted)
   {
     this->Unsorted->ReleaseGraphicsResources(w);
+  }
+  if (this->FXAA)
+  {
+    this->FXAA->ReleaseGraphicsResources();
   }
 }

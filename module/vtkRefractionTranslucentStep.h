@@ -9,7 +9,9 @@
  * set, glass or not. This step reads the renderer's settings (UseDepthPeeling,
  * MaximumNumberOfPeels, OcclusionRatio) every frame and draws through the same passes the
  * renderer would, where the pass draws into the window; inside another pass's framebuffer
- * (a vtkFramebufferPass) it draws as a vtkRenderStepsPass does there.
+ * (a vtkFramebufferPass) it draws as a vtkRenderStepsPass does there. Then, as the renderer
+ * does after its translucent geometry, the renderer's FXAA when UseFXAA is on (VTK skips it
+ * with a render pass set).
  */
 #ifndef vtkRefractionTranslucentStep_h
 #define vtkRefractionTranslucentStep_h
@@ -18,6 +20,7 @@
 #include "vtkSmartPointer.h" // For members
 
 class vtkDepthPeelingPass;
+class vtkOpenGLFXAAFilter;
 class vtkOrderIndependentTranslucentPass;
 class vtkTranslucentPass;
 
@@ -42,6 +45,7 @@ private:
   vtkSmartPointer<vtkDepthPeelingPass> Peeling; ///< made at the first frame that peels
   vtkSmartPointer<vtkOrderIndependentTranslucentPass> OrderIndependent;
   vtkSmartPointer<vtkTranslucentPass> Unsorted; ///< inside another pass's framebuffer
+  vtkSmartPointer<vtkOpenGLFXAAFilter> FXAA;
 };
 
 #endif

@@ -1,14 +1,17 @@
-// Translucent actors beside the glass, drawn as VTK draws them without the pass: three
-// overlapping translucent spheres (opacity 0.4), with the renderer's depth peeling on
-// (`peeling`) or off (`order_independent`: VTK 9.1's renderer then uses order-independent
-// translucency). A vtkRenderStepsPass draws translucent geometry unsorted, so with the
-// pass set (its default delegate is one) they came out differently, glass or not. Asserts:
+// The renderer's own settings, honoured as VTK's renderer honours them without a pass:
+// three overlapping translucent spheres (opacity 0.4), drawn
+//   peeling            with the renderer's depth peeling
+//   order_independent  without it (VTK 9.1's renderer then uses order-independent
+//                      translucency)
+//   fxaa               without it, and with the renderer's FXAA on
+// (VTK's depth peeling and FXAA need a single-sampled window: those two cases ask for one).
+// A vtkRenderStepsPass draws translucent geometry unsorted and no FXAA, so with the pass set
+// (its default delegate is one) the pictures came out differently, glass or not. Asserts:
 //  - the pass without glass draws exactly plain VTK's picture;
 //  - with a glass sphere below the translucent ones (in the picture's lower half), the upper
 //    half, where they are, equals plain VTK's, and the glass is drawn (over 500 pixels
 //    changed).
-// VTK's depth peeling needs a single-sampled window, so `peeling` asks for one.
-// Usage: TestGlassTranslucentScene peeling|order_independent
+// Usage: TestRendererSettings peeling|order_independent|fxaa
 #include "vtkRefractionPass.h"
 
 #include "rfTestScene.h"
@@ -36,11 +39,13 @@ enum Mode
   PASS_AND_GLASS
 };
 
-vtkSmartPointer<vtkImageData> Render(bool peeling, Mode mode)
+vtkSmartPointer<vtkImageData> Render(const std::string& setting, Mode mode)
 {
+  const bool peeling = setting == "peeling";
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0.1, 0.1, 0.2);
   renderer->SetUseDepthPeeling(peeling);
+  renderer->SetUseFXAA(setting == "fxaa");
   renderer->SetMaximumNumberOfPeels(8);
   renderer->SetOcclusionRatio(0.0);
   const double centres[3][3] = { { -0.4, 0.3, 0.0 }, { 0.4, 0.3, -0.3 }, { 0.0, 0.7, 0.3 } };
@@ -64,10 +69,11 @@ vtkSmartPointer<vtkImageData> Render(bool peeling, Mode mode)
     renderer->SetPass(pass);
   }
   auto window = rftest::MakeWindow(renderer, kSize, kSize);
-  if (peeling)
+  if (peeling || setting == "fxaa")
   {
-    // VTK's depth peeling needs a single-sampled window: in a multisampled one VTK 9.1 alone,
-    // without the pass, leaves GL_INVALID_OPERATION after the frame.
+    // VTK's depth peeling and its FXAA (which stands in for multisampling) need a
+    // single-sampled window: in a multisampled one VTK 9.1 alone, without the pass, leaves
+    // GL_INVALID_OPERATION after the frame.
     window->SetMultiSamples(0);
   }
   rftest::LookAtOrigin(renderer, 6.0, 0.0);
@@ -80,20 +86,19 @@ vtkSmartPointer<vtkImageData> Render(bool peeling, Mode mode)
 int main(int argc, char* argv[])
 {
   const std::string mode = argc > 1 ? argv[1] : "";
-  if (mode != "peeling" && mode != "order_independent")
+  if (mode != "peeling" && mode != "order_independent" && mode != "fxaa")
   {
-    std::fprintf(stderr, "usage: %s peeling|order_independent\n", argv[0]);
+    std::fprintf(stderr, "usage: %s peeling|order_independent|fxaa\n", argv[0]);
     return EXIT_FAILURE;
   }
-  const bool peeling = mode == "peeling";
-  auto plain = Render(peeling, PLAIN);
-  auto passOnly = Render(peeling, PASS);
+  auto plain = Render(mode, PLAIN);
+  auto passOnly = Render(mode, PASS);
   const int differing = rftest::DifferingPixels(plain, passOnly, 0);
   std::printf("%s: the pass without glass differs from plain VTK in %d pixels\n", mode.c_str(),
     differing);
-  RF_REQUIRE(differing == 0, "the pass changes translucent actors");
+  RF_REQUIRE(differing == 0, "the pass changes what VTK draws");
 
-  auto withGlass = Render(peeling, PASS_AND_GLASS);
+  auto withGlass = Render(mode, PASS_AND_GLASS);
   // The glass lies in the lower half of the picture, the translucent spheres in the upper.
   int changed = 0;
   int changedAbove = 0;

@@ -19,6 +19,7 @@
 #include "vtkRefractionMethod.h"
 #include "vtkRefractionOpaqueStep.h"
 #include "vtkRefractionRankExchange.h"
+#include "vtkRefractionRendererOpaqueStep.h"
 #include "vtkRefractionSampleComposite.h"
 #include "vtkRefractionSelectionPass.h"
 #include "vtkRefractionSHTransfer.h"
@@ -192,8 +193,10 @@ void vtkRefractionPass::Render(const vtkRenderState* s)
   if (!this->DelegatePass)
   {
     vtkNew<vtkRenderStepsPass> steps;
-    // Translucent geometry as VTK's renderer draws it without a pass (depth peeling or
-    // order-independent translucency), not unsorted.
+    // Opaque and translucent geometry as VTK's renderer draws them without a pass (hidden
+    // line removal, SSAO; depth peeling or order-independent translucency, FXAA), not plainly.
+    vtkNew<vtkRefractionRendererOpaqueStep> opaque;
+    steps->SetOpaquePass(opaque);
     vtkNew<vtkRefractionTranslucentStep> translucent;
     steps->SetTranslucentPass(translucent);
     this->SetDelegatePass(steps);

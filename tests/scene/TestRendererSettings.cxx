@@ -1,17 +1,20 @@
 // The renderer's own settings, honoured as VTK's renderer honours them without a pass:
-// three overlapping translucent spheres (opacity 0.4), drawn
+// three overlapping translucent spheres (opacity 0.4) before an opaque wall, cone and
+// wireframe sphere, drawn
 //   peeling            with the renderer's depth peeling
 //   order_independent  without it (VTK 9.1's renderer then uses order-independent
 //                      translucency)
 //   fxaa               without it, and with the renderer's FXAA on
+//   ssao               with the renderer's screen-space ambient occlusion
+//   hidden_lines       with the renderer's hidden line removal
 // (VTK's depth peeling and FXAA need a single-sampled window: those two cases ask for one).
-// A vtkRenderStepsPass draws translucent geometry unsorted and no FXAA, so with the pass set
-// (its default delegate is one) the pictures came out differently, glass or not. Asserts:
+// A vtkRenderStepsPass draws translucent geometry unsorted, and neither FXAA, SSAO nor hidden
+// line removal, so with the pass set (its default delegate is one) the pictures came out
+// differently, glass or not. Asserts:
 //  - the pass without glass draws exactly plain VTK's picture;
-//  - with a glass sphere below the translucent ones (in the picture's lower half), the upper
-//    half, where they are, equals plain VTK's, and the glass is drawn (over 500 pixels
-//    changed).
-// Usage: TestRendererSettings peeling|order_independent|fxaa
+//  - with a glass sphere below the others (in the picture's lower half), the upper half
+//    equals plain VTK's, and the glass is drawn (over 500 pixels changed).
+// Usage: TestRendererSettings peeling|order_independent|fxaa|ssao|hidden_lines
 #include "vtkRefractionPass.h"
 
 #include "rfTestScene.h"
@@ -57,6 +60,25 @@ vtkSmartPointer<vtkImageData> Render(const std::string& setting, Mode mode)
     veil->GetProperty()->SetOpacity(0.4);
     renderer->AddActor(veil);
   }
+  // Opaque geometry for the opaque settings: a wall behind everything, a cone standing out
+  // of it (ambient occlusion where they meet) and a sphere shown as wireframe (hidden lines).
+  const double wallSize[3] = { 6.0, 6.0, 0.2 };
+  const double wallCentre[3] = { 0.0, 0.0, -2.0 };
+  auto wall = rftest::ActorFor(rftest::BoxPoly(wallSize, wallCentre));
+  wall->GetProperty()->SetColor(0.8, 0.8, 0.7);
+  renderer->AddActor(wall);
+  const double coneCentre[3] = { 1.1, 0.9, -1.4 };
+  auto cone = rftest::ActorFor(rftest::ConePoly(coneCentre, 1.0, 0.4, 24));
+  cone->GetProperty()->SetColor(1.0, 0.6, 0.2);
+  renderer->AddActor(cone);
+  const double wireCentre[3] = { -1.1, 0.9, -1.0 };
+  auto wire = rftest::ActorFor(rftest::SpherePoly(wireCentre, 0.4, 16));
+  wire->GetProperty()->SetRepresentationToWireframe();
+  renderer->AddActor(wire);
+  renderer->SetUseHiddenLineRemoval(setting == "hidden_lines");
+  renderer->SetUseSSAO(setting == "ssao");
+  renderer->SetSSAORadius(0.5);
+  renderer->SetSSAOKernelSize(32);
   const double below[3] = { 0.0, -1.0, 0.0 };
   auto glass = rftest::GlassActor(rftest::SpherePoly(below, 0.5, 32), 1.5);
   if (mode == PASS_AND_GLASS)
@@ -86,9 +108,11 @@ vtkSmartPointer<vtkImageData> Render(const std::string& setting, Mode mode)
 int main(int argc, char* argv[])
 {
   const std::string mode = argc > 1 ? argv[1] : "";
-  if (mode != "peeling" && mode != "order_independent" && mode != "fxaa")
+  if (mode != "peeling" && mode != "order_independent" && mode != "fxaa" && mode != "ssao" &&
+    mode != "hidden_lines")
   {
-    std::fprintf(stderr, "usage: %s peeling|order_independent|fxaa\n", argv[0]);
+    std::fprintf(
+      stderr, "usage: %s peeling|order_independent|fxaa|ssao|hidden_lines\n", argv[0]);
     return EXIT_FAILURE;
   }
   auto plain = Render(mode, PLAIN);
@@ -99,7 +123,7 @@ int main(int argc, char* argv[])
   RF_REQUIRE(differing == 0, "the pass changes what VTK draws");
 
   auto withGlass = Render(mode, PASS_AND_GLASS);
-  // The glass lies in the lower half of the picture, the translucent spheres in the upper.
+  // The glass lies in the lower half of the picture, the others in the upper.
   int changed = 0;
   int changedAbove = 0;
   for (int y = 0; y < kSize; ++y)
@@ -111,9 +135,9 @@ int main(int argc, char* argv[])
       changedAbove += differs && y >= kSize / 2 ? 1 : 0;
     }
   }
-  std::printf("%s: the glass changes %d pixels, %d of them in the translucent spheres' half\n",
+  std::printf("%s: the glass changes %d pixels, %d of them in the upper half\n",
     mode.c_str(), changed, changedAbove);
   RF_REQUIRE(changed > 500, "the glass is not drawn");
-  RF_REQUIRE(changedAbove == 0, "the glass changes the translucent spheres' picture");
+  RF_REQUIRE(changedAbove == 0, "the glass changes the picture's upper half");
   return EXIT_SUCCESS;
 }

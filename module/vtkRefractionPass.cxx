@@ -242,7 +242,7 @@ void vtkRefractionPass::RenderSelection(const vtkRenderState* s)
   // checker refuses stay out, as in a frame.
   std::vector<vtkProp*> glass;
   std::vector<vtkProp*> others;
-  this->GlassChecker->SplitProps(s, glass, &others, false);
+  this->GlassChecker->SplitProps(s, glass, &others, this->CompositingExchange() != nullptr);
   std::vector<vtkProp*> props;
   for (int i = 0; i < s->GetPropArrayCount(); ++i)
   {

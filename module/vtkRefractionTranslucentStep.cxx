@@ -6,6 +6,7 @@
 #include "vtkOpenGLFXAAFilter.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOrderIndependentTranslucentPass.h"
+#include "vtkProp.h"
 #include "vtkRenderState.h"
 #include "vtkTranslucentPass.h"
 #include "vtk_glew.h"
@@ -30,8 +31,19 @@ void vtkRefractionTranslucentStep::Render(const vtkRenderState* s)
   // What vtkOpenGLRenderer::DeviceRenderTranslucentPolygonalGeometry does (VTK 9.1), with
   // the state's props instead of all of the renderer's; then the renderer's FXAA.
   auto* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  // Only when a prop has translucent geometry, as the renderer (vtkRenderer::UpdateGeometry):
+  // peeling and order-independent translucency clear and composite whole-window targets.
+  bool anyTranslucent = false;
+  for (int i = 0; i < s->GetPropArrayCount() && !anyTranslucent; ++i)
+  {
+    anyTranslucent = s->GetPropArray()[i]->HasTranslucentPolygonalGeometry() != 0;
+  }
   vtkRenderPass* pass = nullptr;
-  if (s->GetFrameBuffer())
+  if (!anyTranslucent)
+  {
+    // nothing to draw
+  }
+  else if (s->GetFrameBuffer())
   {
     // Inside another pass's framebuffer (a vtkFramebufferPass, say): what a vtkRenderStepsPass
     // does there. Those passes' own targets are what VTK's peeling and order-independent
@@ -71,8 +83,12 @@ void vtkRefractionTranslucentStep::Render(const vtkRenderState* s)
     }
     pass = this->OrderIndependent;
   }
-  pass->Render(s);
-  this->NumberOfRenderedProps = pass->GetNumberOfRenderedProps();
+  this->NumberOfRenderedProps = 0;
+  if (pass)
+  {
+    pass->Render(s);
+    this->NumberOfRenderedProps = pass->GetNumberOfRenderedProps();
+  }
   // The renderer's FXAA comes next, before volumes and overlays (vtkRenderer::UpdateGeometry);
   // with a render pass set VTK skips it. Not in a multisampled framebuffer, whose samples
   // already smooth the edges: there VTK 9.1's FXAA copies from it and leaves

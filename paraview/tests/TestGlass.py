@@ -459,12 +459,15 @@ def case_viewfeatures(scene):
     scene.view = glass_view
 
 
-def selected_ids(source):
-    """The ids of the selection on a source (the selection source's IDs), or []."""
+def selection_of(source):
+    """The selection on a source: its selection source's kind and every property's value as
+    text (ids, blocks or whatever that kind holds), or None."""
     selection = source.SMProxy.GetSelectionInput(0)
     if selection is None:
-        return []
-    return list(servermanager._getPyProxy(selection).IDs)
+        return None
+    proxy = servermanager._getPyProxy(selection)
+    values = {name: str(proxy.GetPropertyValue(name)) for name in proxy.ListProperties()}
+    return selection.GetXMLName(), values
 
 
 def case_selection(scene):
@@ -487,16 +490,16 @@ def case_selection(scene):
         scene.view = view
         scene.picture("selection_%s" % view.GetXMLName())
         SelectSurfaceCells(Rectangle=[0, 0, SIZE - 1, SIZE - 1], View=view)
-        selected[view.GetXMLName()] = (selected_ids(glass_source), selected_ids(plane))
+        selected[view.GetXMLName()] = (selection_of(glass_source), selection_of(plane))
         ClearSelection(glass_source)
         ClearSelection(plane)
     scene.view = glass_view
     plain = selected["RenderView"]
     glass = selected[glass_view.GetXMLName()]
     for index, name in enumerate(("contour", "wall")):
-        print("%s: %d ids selected in the Render View, %d in the glass view"
-              % (name, len(plain[index]), len(glass[index])))
-        check_that(len(plain[index]) > 0, "the Render View selects cells of the %s" % name)
+        print("%s: selected in the Render View %s, in the glass view %s"
+              % (name, plain[index], glass[index]))
+        check_that(plain[index] is not None, "the Render View selects cells of the %s" % name)
         check_that(glass[index] == plain[index], "the glass view selects the %s's cells as "
                    "the Render View does" % name)
 

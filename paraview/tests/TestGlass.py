@@ -21,9 +21,9 @@ Cases
   viewfeatures  the glass view draws opaque and translucent data as ParaView's Render View
               does, with FXAA, SSAO, tone mapping and the orientation axes each flipped (each
               changes the Render View's picture, so the comparison is not empty).
-  selection   selecting cells on the surface over the whole view selects the same cells of
-              the glass and of the opaque wall in the glass view as in ParaView's Render View
-              (the glass picked as its surface).
+  selection   selecting cells on the surface over the whole view selects what ParaView's
+              Render View selects (the opaque wall's cells, less those the contour hides: the
+              glass is picked as its surface).
 """
 import os
 import sys
@@ -505,10 +505,11 @@ def case_selection(scene):
     glass = selected[glass_view.GetXMLName()]
     print("selected in the Render View: %s" % plain)
     print("selected in the glass view: %s" % glass)
-    for name in sources:
-        check_that(name in plain, "the Render View selects cells of the %s" % name)
-        check_that(glass.get(name) == plain[name], "the glass view selects the %s's cells as "
-                   "the Render View does" % name)
+    # ParaView 5.11 reports the wall's cells only (not the contour's, in either view); the
+    # wall's cells behind the contour are missing from both, so the glass occludes as the
+    # surface does.
+    check_that("wall" in plain, "the Render View selects cells of the wall")
+    check_that(glass == plain, "the glass view selects what the Render View selects")
 
 
 CASES = {"scene": case_scene, "types": case_types, "colour": case_colour,

@@ -71,17 +71,22 @@ void Look(Rig& rig)
   rig.LookAt(eye, focal, up, 40.0, 1.0, 20.0);
 }
 
-// The reference picture: the rest of the scene, plus `subject` as an ordinary actor if given.
-Frame Reference(vtkPolyData* subject)
+// The reference picture: the rest of the scene, plus `subject` if given (a polydata: as an
+// ordinary actor).
+Frame ReferenceWithProp(vtkProp* subject)
 {
   Rig rig(kSize, kSize);
   AddRest(rig);
   if (subject)
   {
-    rig.Renderer->AddActor(ActorFor(subject));
+    rig.Renderer->AddViewProp(subject);
   }
   Look(rig);
   return rig.Render();
+}
+Frame Reference(vtkPolyData* subject)
+{
+  return ReferenceWithProp(subject ? ActorFor(subject).Get() : nullptr);
 }
 
 // Largest colour difference between two frames (inf for a size mismatch or NaN).
@@ -397,13 +402,9 @@ int Translucent(MessageLog* log, bool afterGlass)
     rig.Render();
     subject->GetProperty()->SetOpacity(0.5);
   }
-  Rig plain(kSize, kSize);
-  AddRest(plain);
   auto ordinary = ActorFor(poly);
   ordinary->GetProperty()->SetOpacity(0.5);
-  plain.Renderer->AddActor(ordinary);
-  Look(plain);
-  const Frame reference = plain.Render();
+  const Frame reference = ReferenceWithProp(ordinary);
   return CheckScene(log, rig, "warning",
     { "Glass actor", Address(subject.Get()), "opacity 0.5", "translucent pass" }, reference);
 }
@@ -445,11 +446,7 @@ int GlyphMapper(MessageLog* log, const std::string&)
   rftest::WithoutHighlights(subject);
   rig.Renderer->AddActor(subject);
   Look(rig);
-  Rig plain(kSize, kSize);
-  AddRest(plain);
-  plain.Renderer->AddActor(GlyphActor());
-  Look(plain);
-  const Frame reference = plain.Render();
+  const Frame reference = ReferenceWithProp(GlyphActor());
   return CheckScene(log, rig, "warning",
     { Address(subject.Get()), "vtkOpenGLGlyph3DMapper", "drawn as an ordinary actor" },
     reference);
@@ -466,13 +463,9 @@ int AssemblyPart(MessageLog* log, const std::string&)
   assembly->AddPart(part);
   rig.Renderer->AddActor(assembly);
   Look(rig);
-  Rig plain(kSize, kSize);
-  AddRest(plain);
   vtkNew<vtkAssembly> plainAssembly;
   plainAssembly->AddPart(ActorFor(poly));
-  plain.Renderer->AddActor(plainAssembly);
-  Look(plain);
-  const Frame reference = plain.Render();
+  const Frame reference = ReferenceWithProp(plainAssembly);
   return CheckScene(log, rig, "warning",
     { Address(part.Get()), "is a part of vtkAssembly", Address(assembly.Get()),
       "drawn as an ordinary actor" },

@@ -37,9 +37,6 @@ public:
   bool Check(vtkOpenGLRenderWindow* renWin, vtkProp* prop, std::string& vertexShader,
     std::string& geometryShader, std::string& fragmentShader);
 
-  /// How many different sources failed so far.
-  int GetNumberOfFailedSources() const { return static_cast<int>(this->Failed.size()); }
-
 protected:
   vtkRefractionProgramGuard();
   ~vtkRefractionProgramGuard() override;

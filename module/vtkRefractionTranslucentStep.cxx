@@ -30,20 +30,51 @@ void vtkRefractionTranslucentStep::Render(const vtkRenderState* s)
 {
   // What vtkOpenGLRenderer::DeviceRenderTranslucentPolygonalGeometry does (VTK 9.1), with
   // the state's props instead of all of the renderer's; then the renderer's FXAA.
-  auto* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
   // Only when a prop has translucent geometry, as the renderer (vtkRenderer::UpdateGeometry):
   // peeling and order-independent translucency clear and composite whole-window targets.
+  this->NumberOfRenderedProps = 0;
   bool anyTranslucent = false;
   for (int i = 0; i < s->GetPropArrayCount() && !anyTranslucent; ++i)
   {
     anyTranslucent = s->GetPropArray()[i]->HasTranslucentPolygonalGeometry() != 0;
   }
-  vtkRenderPass* pass = nullptr;
-  if (!anyTranslucent)
+  if (anyTranslucent)
   {
-    // nothing to draw
+    vtkRenderPass* pass = this->TranslucentPass(s);
+    pass->Render(s);
+    this->NumberOfRenderedProps = pass->GetNumberOfRenderedProps();
   }
-  else if (s->GetFrameBuffer())
+  // The renderer's FXAA comes next, before volumes and overlays (vtkRenderer::UpdateGeometry);
+  // with a render pass set VTK skips it. Not in a multisampled framebuffer, whose samples
+  // already smooth the edges: there VTK 9.1's FXAA copies from it and leaves
+  // GL_INVALID_OPERATION (without the pass too).
+  auto* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  if (!ren || !ren->GetUseFXAA() || s->GetFrameBuffer())
+  {
+    return;
+  }
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  if (samples > 1)
+  {
+    return;
+  }
+  if (!this->FXAA)
+  {
+    this->FXAA = vtkSmartPointer<vtkOpenGLFXAAFilter>::New();
+  }
+  if (ren->GetFXAAOptions())
+  {
+    this->FXAA->UpdateConfiguration(ren->GetFXAAOptions());
+  }
+  this->FXAA->Execute(ren);
+}
+
+//------------------------------------------------------------------------------
+vtkRenderPass* vtkRefractionTranslucentStep::TranslucentPass(const vtkRenderState* s)
+{
+  auto* ren = vtkOpenGLRenderer::SafeDownCast(s->GetRenderer());
+  if (s->GetFrameBuffer())
   {
     // Inside another pass's framebuffer (a vtkFramebufferPass, say): what a vtkRenderStepsPass
     // does there. Those passes' own targets are what VTK's peeling and order-independent
@@ -52,9 +83,9 @@ void vtkRefractionTranslucentStep::Render(const vtkRenderState* s)
     {
       this->Unsorted = vtkSmartPointer<vtkTranslucentPass>::New();
     }
-    pass = this->Unsorted;
+    return this->Unsorted;
   }
-  else if (ren && ren->GetUseDepthPeeling())
+  if (ren && ren->GetUseDepthPeeling())
   {
     if (!this->Peeling)
     {
@@ -71,42 +102,15 @@ void vtkRefractionTranslucentStep::Render(const vtkRenderState* s)
     }
     this->Peeling->SetMaximumNumberOfPeels(ren->GetMaximumNumberOfPeels());
     this->Peeling->SetOcclusionRatio(ren->GetOcclusionRatio());
-    pass = this->Peeling;
+    return this->Peeling;
   }
-  else
+  if (!this->OrderIndependent)
   {
-    if (!this->OrderIndependent)
-    {
-      this->OrderIndependent = vtkSmartPointer<vtkOrderIndependentTranslucentPass>::New();
-      vtkNew<vtkTranslucentPass> translucent;
-      this->OrderIndependent->SetTranslucentPass(translucent);
-    }
-    pass = this->OrderIndependent;
+    this->OrderIndependent = vtkSmartPointer<vtkOrderIndependentTranslucentPass>::New();
+    vtkNew<vtkTranslucentPass> translucent;
+    this->OrderIndependent->SetTranslucentPass(translucent);
   }
-  this->NumberOfRenderedProps = 0;
-  if (pass)
-  {
-    pass->Render(s);
-    this->NumberOfRenderedProps = pass->GetNumberOfRenderedProps();
-  }
-  // The renderer's FXAA comes next, before volumes and overlays (vtkRenderer::UpdateGeometry);
-  // with a render pass set VTK skips it. Not in a multisampled framebuffer, whose samples
-  // already smooth the edges: there VTK 9.1's FXAA copies from it and leaves
-  // GL_INVALID_OPERATION (without the pass too).
-  GLint samples = 0;
-  glGetIntegerv(GL_SAMPLES, &samples);
-  if (ren && ren->GetUseFXAA() && !s->GetFrameBuffer() && samples <= 1)
-  {
-    if (!this->FXAA)
-    {
-      this->FXAA = vtkSmartPointer<vtkOpenGLFXAAFilter>::New();
-    }
-    if (ren->GetFXAAOptions())
-    {
-      this->FXAA->UpdateConfiguration(ren->GetFXAAOptions());
-    }
-    this->FXAA->Execute(ren);
-  }
+  return this->OrderIndependent;
 }
 
 //------------------------------------------------------------------------------

@@ -42,6 +42,9 @@ private:
   vtkRefractionTranslucentStep(const vtkRefractionTranslucentStep&) = delete;
   void operator=(const vtkRefractionTranslucentStep&) = delete;
 
+  /// The pass that draws the translucent props of this state, as the renderer would choose it.
+  vtkRenderPass* TranslucentPass(const vtkRenderState* s);
+
   vtkSmartPointer<vtkDepthPeelingPass> Peeling; ///< made at the first frame that peels
   vtkSmartPointer<vtkOrderIndependentTranslucentPass> OrderIndependent;
   vtkSmartPointer<vtkTranslucentPass> Unsorted; ///< inside another pass's framebuffer

@@ -78,6 +78,9 @@ std::vector<Column> Columns(int stageCount)
   c.push_back({ "smooth_internal_reflections",
     [](const Row& r) { return std::string(r.Config.Smooth ? "1" : "0"); },
     [](Row& r, const std::string& v) { r.Config.Smooth = v == "1"; } });
+  c.push_back({ "coarse_shading",
+    [](const Row& r) { return std::string(r.Config.Coarse ? "1" : "0"); },
+    [](Row& r, const std::string& v) { r.Config.Coarse = v == "1"; } });
   c.push_back({ "repeats", [](const Row& r) { return std::to_string(r.Repeats); },
     [](Row& r, const std::string& v) { r.Repeats = std::atoi(v.c_str()); } });
   number("cpu_ms", [](Row& r) -> double& { return r.CpuMs.Median; });

@@ -107,7 +107,7 @@ bool IsDefaultSetting(const Setting& s)
 {
   return s.Method == "DIR" && s.Steps == 5 && !s.Bounds && !s.Adaptive && !s.Nearest &&
     !s.Paper && !s.NoScene && !s.AntiAliasing && !s.PixelComposite && s.Bounces == 0 &&
-    !s.PointLookups && !s.ExitReflection && !s.Smooth;
+    !s.PointLookups && !s.ExitReflection && !s.Smooth && !s.Coarse;
 }
 
 std::string ParetoSummary(const std::vector<Row>& rows)

@@ -29,6 +29,8 @@ std::vector<Setting> PresetSettings(const Options& o)
     setting.Smooth = true;
     return setting;
   };
+  Setting coarse{ "DIR", 5 };
+  coarse.Coarse = true;
   if (o.Quick)
   {
     settings.push_back({ "DIR", 5 });
@@ -36,6 +38,7 @@ std::vector<Setting> PresetSettings(const Options& o)
     point.PointLookups = true; // what the filtered lookups gain
     settings.push_back(point);
     settings.push_back(antiAliased);
+    settings.push_back(coarse);
     if (o.MultiSamples > 0)
     {
       for (Setting pixelwise : { Setting{ "DIR", 5 }, antiAliased })
@@ -78,6 +81,7 @@ std::vector<Setting> PresetSettings(const Options& o)
   settings.push_back({ "DIR", 5, false, false, true });
   settings.push_back({ "DIR", 5, false, false, false, true });
   settings.push_back(antiAliased);
+  settings.push_back(coarse);
   settings.push_back(bounces);
   settings.push_back(exitReflection);
   settings.push_back(bouncesAndExit);
@@ -149,5 +153,6 @@ void Apply(vtkRefractionPass* pass, const Setting& setting)
   pass->SetPeelLayers(std::max(setting.Layers, 2));
   pass->SetFilteredLookups(!setting.PointLookups);
   pass->SetSmoothInternalReflections(setting.Smooth);
+  pass->SetCoarseShading(setting.Coarse);
 }
 }

@@ -29,6 +29,7 @@ struct Setting
   int Layers = 0;            // PEEL: SetPeelLayers (K)
   bool PointLookups = false; // SetFilteredLookups(false): one direction per ray
   bool Smooth = false;       // SetSmoothInternalReflections(true)
+  bool Coarse = false;       // SetCoarseShading(true): one ray per 2x2 block where smooth
   std::string Label() const
   {
     std::ostringstream s;
@@ -48,7 +49,8 @@ struct Setting
     {
       s << " TIR " << Bounces;
     }
-    s << (ExitReflection ? " exit" : "") << (Smooth ? " smooth" : "");
+    s << (ExitReflection ? " exit" : "") << (Smooth ? " smooth" : "")
+      << (Coarse ? " coarse" : "");
     return s.str();
   }
 };

@@ -40,6 +40,7 @@ struct rfViewerOptions
   bool Interactive = false;
   bool NoText = false;
   bool AntiAliasing = false;
+  bool CoarseShading = false;
   bool ExitReflection = false;
   bool SmoothInternalReflections = false;
   bool Masks = false;

@@ -386,6 +386,7 @@ int BuildScene(const rfViewerOptions& o, const rfViewerSettings& s, Scene& scene
   scene.Pass->SetSearchSteps(s.Steps);
   scene.Pass->SetPeelLayers(s.Layers);
   scene.Pass->SetAntiAliasing(o.AntiAliasing);
+  scene.Pass->SetCoarseShading(o.CoarseShading);
   scene.Pass->SetExitReflection(o.ExitReflection);
   scene.Pass->SetSmoothInternalReflections(o.SmoothInternalReflections);
   scene.Renderer->SetPass(scene.Pass);
@@ -415,6 +416,10 @@ void SetStatus(Scene& scene, double milliseconds, int timeIndex)
   if (scene.Pass->GetAntiAliasing())
   {
     line << "  AA";
+  }
+  if (scene.Pass->GetCoarseShading() && !scene.Pass->GetAntiAliasing())
+  {
+    line << "  coarse";
   }
   if (scene.Pass->GetExitReflection() && scene.Pass->GetMethod() == vtkRefractionPass::DIR)
   {

@@ -103,6 +103,7 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Fresnel: " << this->Fresnel << "\n";
   os << indent << "FilteredLookups: " << this->FilteredLookups << "\n";
   os << indent << "AntiAliasing: " << this->AntiAliasing << "\n";
+  os << indent << "CoarseShading: " << this->CoarseShading << "\n";
   os << indent << "MultiSampleSilhouette: " << this->MultiSampleSilhouette << "\n";
   os << indent << "CompositeProgram: "
      << (this->CompositeProgram == COMPOSITE_PROGRAM_SEPARATE ? "separate"
@@ -426,6 +427,11 @@ void vtkRefractionPass::RenderGlass(
   wanted[vtkRefractionTargets::GLASS_COLOR_SHADED] =
     this->SmoothInternalReflections && !this->AntiAliasing;
   wanted[vtkRefractionTargets::CORNER_Z] = this->AntiAliasing;
+  const bool coarse = this->CoarseShading && !this->AntiAliasing;
+  wanted[vtkRefractionTargets::COARSE_COLOR] = coarse;
+  wanted[vtkRefractionTargets::COARSE_RAY] = coarse;
+  wanted[vtkRefractionTargets::COARSE_Z] = coarse;
+  wanted[vtkRefractionTargets::TRACE_Z] = coarse;
   wanted[vtkRefractionTargets::DEBUG_0] = this->DebugOutput;
   wanted[vtkRefractionTargets::DEBUG_1] = this->DebugOutput;
   this->Targets->Update(renWin, this->Width, this->Height, wanted, reduction);
@@ -434,6 +440,7 @@ void vtkRefractionPass::RenderGlass(
     this->MultiSampleSilhouette && !exchange,
     this->Materials, this->Lights, this->BoundsDepthRange);
   frame.SmoothInternalReflections = this->SmoothInternalReflections && !this->AntiAliasing;
+  frame.CoarseShading = coarse;
   // Where the glass can be on screen: the shading and the composite run there only. Across
   // ranks rank 0 shades every rank's glass, which its own props do not bound.
   frame.GlassRectangle[2] = this->Width;

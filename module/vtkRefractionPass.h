@@ -457,6 +457,23 @@ public:
 
   ///@{
   /**
+   * Fewer rays than pixels (off by default): the refraction is traced at one pixel of each
+   * 2x2 block, and every pixel whose neighbouring traced pixels lie on the same smooth part of
+   * the glass (same material, depth and normal close to its own, exit directions within a few
+   * degrees of each other, no total internal reflection) takes their colours interpolated.
+   * The other pixels (the silhouette, creases, jumps of the exit, rays reflected inside) are
+   * traced themselves, with point lookups. The shading's cost drops toward a quarter where the
+   * glass covers much of a large window; the interpolation blurs what the glass shows over
+   * two pixels, so it trades error for time (docs/benchmark.md measures both). Costs two
+   * RGBA16F targets of a quarter of the pixels. Not with AntiAliasing (which wins).
+   */
+  vtkSetMacro(CoarseShading, bool);
+  vtkGetMacro(CoarseShading, bool);
+  vtkBooleanMacro(CoarseShading, bool);
+  ///@}
+
+  ///@{
+  /**
    * The glass's silhouette at the window's samples (on by default). VTK's default window is
    * multisampled, and the opaque actors' edges are resolved from its samples; the glass is
    * shaded once per pixel, so put into the scene pixel by pixel its silhouette would be
@@ -627,6 +644,7 @@ protected:
   bool Fresnel = true;
   bool FilteredLookups = true;
   bool AntiAliasing = false;
+  bool CoarseShading = false;
   bool MultiSampleSilhouette = true;
   int CompositeProgram = COMPOSITE_PROGRAM_AUTO;
   bool DebugOutput = false;

@@ -69,6 +69,8 @@ const TargetSampler kSamplers[] = {
   { vtkRefractionTargets::PEEL_DEPTHS_A, "rfPeelDepthsA" },
   { vtkRefractionTargets::PEEL_DEPTHS_B, "rfPeelDepthsB" },
   { vtkRefractionTargets::FRONT_SH, "rfFrontSH" },
+  { vtkRefractionTargets::COARSE_COLOR, "rfCoarseColour" },
+  { vtkRefractionTargets::COARSE_RAY, "rfCoarseRay" },
 };
 }
 
@@ -82,6 +84,10 @@ void vtkRefractionShadeStage::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Shading program: " << (this->Shade ? "built" : "none") << "\n";
   os << indent << "Debug program: " << (this->Debug ? "built" : "none") << "\n";
+  os << indent << "Coarse shading programs: "
+     << (this->CoarseSamples && this->CoarseDepthQuad && this->CoarseResolveQuad ? "built"
+                                                                                : "none")
+     << "\n";
   os << indent << "Composite program: " << (this->CompositeQuad ? "built" : "none") << "\n";
   os << indent << "Anti-aliasing composite program: "
      << (this->CornerCompositeQuad ? "built" : "none") << "\n";
@@ -91,9 +97,11 @@ void vtkRefractionShadeStage::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-vtkRefractionShadeStage::Program* vtkRefractionShadeStage::GetProgram(bool debug)
+vtkRefractionShadeStage::Program* vtkRefractionShadeStage::GetProgram(int kind)
 {
-  std::unique_ptr<Program>& program = debug ? this->Debug : this->Shade;
+  std::unique_ptr<Program>& program = kind == PROGRAM_DEBUG ? this->Debug
+    : kind == PROGRAM_COARSE_SAMPLES                        ? this->CoarseSamples
+                                                            : this->Shade;
   if (!program)
   {
     program.reset(new Program);
@@ -162,16 +170,31 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
   {
     defines << "#define RF_SMOOTH_INTERNAL_REFLECTIONS\n";
   }
+  // Coarse shading: the blocks' rays too (the pixels they do not stand for are shaded as
+  // without it).
+  if (!debug && frame.CoarseShading &&
+    !this->Build(
+      ren, method, PROGRAM_COARSE_SAMPLES, defines.str() + "#define RF_COARSE_SAMPLES\n"))
+  {
+    return false;
+  }
+  return this->Build(ren, method, debug ? PROGRAM_DEBUG : PROGRAM_SHADE, defines.str());
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionShadeStage::Build(
+  vtkOpenGLRenderer* ren, vtkRefractionMethod* method, int kind, const std::string& defines)
+{
   // The defines name the method and every variant, so they are the program's key: the source
   // (the kernel and the stage, tens of kilobytes) is put together only when they change, not
   // every frame.
-  Program& program = *this->GetProgram(debug);
-  if (program.Quad && program.Defines == defines.str())
+  Program& program = *this->GetProgram(kind);
+  if (program.Quad && program.Defines == defines)
   {
     return true;
   }
   std::string source = rfShadeFSSource;
-  vtkShaderProgram::Substitute(source, "in vec2 texCoord;", "in vec2 texCoord;\n" + defines.str());
+  vtkShaderProgram::Substitute(source, "in vec2 texCoord;", "in vec2 texCoord;\n" + defines);
   vtkShaderProgram::Substitute(
     source, "//RF::Common", std::string(rfKernelSource) + rfCommonSource);
   vtkShaderProgram::Substitute(source, "//RF::Environment", rfEnvironmentSource);
@@ -181,7 +204,7 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   program.Quad.reset(
     new vtkOpenGLQuadHelper(renWin, FarPlaneQuadVertexShader().c_str(), source.c_str(), ""));
-  program.Defines = defines.str();
+  program.Defines = defines;
   if (!program.Quad->Program || !program.Quad->Program->GetCompiled())
   {
     vtkErrorMacro("Could not build the refraction shading program; the glass is not drawn.");
@@ -195,9 +218,9 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
 //------------------------------------------------------------------------------
 void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* method,
   vtkRefractionPass* settings, vtkRefractionTargets* targets, const Frame& frame,
-  const std::vector<float>& materialIOR, const std::vector<float>& materialSheet, bool debug)
+  const std::vector<float>& materialIOR, const std::vector<float>& materialSheet, int kind)
 {
-  Program* program = this->GetProgram(debug);
+  Program* program = this->GetProgram(kind);
   if (!program->Quad)
   {
     return;
@@ -344,11 +367,25 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
   vtkTextureObject* shaded = frame.SmoothInternalReflections && !corners
     ? targets->Get(vtkRefractionTargets::GLASS_COLOR_SHADED)
     : nullptr;
+  // Coarse shading: the blocks' rays first; then the pixels they stand for are written from
+  // them, and TRACE_Z gets 0 at the glass pixels they do not stand for and 1 elsewhere, so
+  // that the shading's test (GL_GREATER at the far plane) traces only those.
+  vtkTextureObject* traceDepth =
+    frame.CoarseShading ? targets->Get(vtkRefractionTargets::TRACE_Z) : nullptr;
+  if (traceDepth &&
+    !this->DrawCoarseSamples(ren, method, settings, targets, frame, materialIOR, materialSheet))
+  {
+    traceDepth = nullptr; // every pixel traces its own ray
+  }
   vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
   fbo->SaveCurrentBindingsAndBuffers();
   fbo->Bind();
   fbo->AddColorAttachment(0, shaded ? shaded : glassColour);
   fbo->AddDepthAttachment(corners ? cornerDepth : frontDepth);
+  if (traceDepth)
+  {
+    fbo->AddDepthAttachment(traceDepth);
+  }
   fbo->ActivateDrawBuffers(1);
   {
     vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
@@ -384,11 +421,23 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
     }
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ostate->vtkglDepthFunc(GL_GREATER);
+    if (traceDepth)
+    {
+      ostate->vtkglDepthFunc(GL_ALWAYS);
+      ostate->vtkglDepthMask(GL_TRUE);
+      this->ResolveCoarseSamples(ren, targets, frame);
+      ostate->vtkglDepthFunc(GL_GREATER);
+    }
     ostate->vtkglDepthMask(GL_FALSE);
-    this->Draw(ren, method, settings, targets, frame, materialIOR, materialSheet, false);
+    this->Draw(
+      ren, method, settings, targets, frame, materialIOR, materialSheet, PROGRAM_SHADE);
     if (shaded)
     {
       fbo->AddColorAttachment(0, glassColour);
+      if (traceDepth)
+      {
+        fbo->AddDepthAttachment(frontDepth); // every glass pixel again, not the traced ones
+      }
       fbo->ActivateDrawBuffers(1);
       if (frame.SampleComposite)
       {
@@ -404,6 +453,144 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
   {
     this->Composite(ren, targets, corners, frame.GlassRectangle);
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionShadeStage::DrawCoarseSamples(vtkOpenGLRenderer* ren,
+  vtkRefractionMethod* method, vtkRefractionPass* settings, vtkRefractionTargets* targets,
+  const Frame& frame, const std::vector<float>& materialIOR,
+  const std::vector<float>& materialSheet)
+{
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkTextureObject* colour = targets->Get(vtkRefractionTargets::COARSE_COLOR);
+  vtkTextureObject* ray = targets->Get(vtkRefractionTargets::COARSE_RAY);
+  vtkTextureObject* coarseDepth = targets->Get(vtkRefractionTargets::COARSE_Z);
+  vtkTextureObject* frontDepth = targets->Get(vtkRefractionTargets::FRONT_DEPTH);
+  vtkShaderProgram* depthProgram = this->ReadyQuad(renWin, this->CoarseDepthQuad,
+    rfCoarseDepthFSSource, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader());
+  if (!colour || !ray || !coarseDepth || !frontDepth || !depthProgram ||
+    !this->GetProgram(PROGRAM_COARSE_SAMPLES)->Quad)
+  {
+    return false;
+  }
+  const int width = static_cast<int>(colour->GetWidth());
+  const int height = static_cast<int>(colour->GetHeight());
+  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
+  fbo->SaveCurrentBindingsAndBuffers();
+  fbo->Bind();
+  fbo->AddColorAttachment(0, colour);
+  fbo->AddColorAttachment(1, ray);
+  fbo->AddDepthAttachment(coarseDepth);
+  fbo->ActivateDrawBuffers(2);
+  {
+    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
+    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
+    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
+    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
+    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
+    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
+    ostate->vtkglViewport(0, 0, width, height);
+    ostate->vtkglDisable(GL_BLEND);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    // Every block's texel holds 0 (no glass) unless this frame traces it: the pixels read the
+    // blocks around theirs, one beyond the glass's rectangle too.
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    this->ClearColourTarget(ostate);
+    // The blocks of the glass's rectangle.
+    const int* r = frame.GlassRectangle;
+    const int x0 = r[0] / 2;
+    const int y0 = r[1] / 2;
+    ostate->vtkglScissor(x0, y0, (r[0] + r[2] + 1) / 2 - x0, (r[1] + r[3] + 1) / 2 - y0);
+    ostate->vtkglEnable(GL_SCISSOR_TEST);
+    // Their depth: the front's at each block's traced pixel.
+    ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    ostate->vtkglDepthFunc(GL_ALWAYS);
+    ostate->vtkglDepthMask(GL_TRUE);
+    frontDepth->Activate();
+    depthProgram->SetUniformi("rfFrontDepth", frontDepth->GetTextureUnit());
+    const float size[2] = { static_cast<float>(width), static_cast<float>(height) };
+    depthProgram->SetUniform2f("rfSize", size);
+    this->CoarseDepthQuad->Render();
+    frontDepth->Deactivate();
+    // Their rays, where that pixel is glass.
+    ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglDepthFunc(GL_GREATER);
+    ostate->vtkglDepthMask(GL_FALSE);
+    this->Draw(ren, method, settings, targets, frame, materialIOR, materialSheet,
+      PROGRAM_COARSE_SAMPLES);
+  }
+  fbo->RemoveColorAttachment(1);
+  fbo->RemoveDepthAttachment();
+  fbo->UnBind();
+  fbo->RestorePreviousBindingsAndBuffers();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkRefractionShadeStage::ResolveCoarseSamples(
+  vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, const Frame& frame)
+{
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  const std::string defines = frame.AbsorptionDistance > 0.0 ? "#define RF_TINT\n" : "";
+  if (this->CoarseResolveQuad && this->CoarseResolveDefines != defines)
+  {
+    this->CoarseResolveQuad->ReleaseGraphicsResources(renWin);
+    this->CoarseResolveQuad.reset();
+  }
+  this->CoarseResolveDefines = defines;
+  std::string source = rfCoarseResolveFSSource;
+  vtkShaderProgram::Substitute(source, "in vec2 texCoord;", "in vec2 texCoord;\n" + defines);
+  vtkShaderProgram* program = this->ReadyQuad(renWin, this->CoarseResolveQuad, source,
+    vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader());
+  if (!program)
+  {
+    return; // every pixel traces its own ray
+  }
+  std::vector<vtkTextureObject*> bound;
+  for (const TargetSampler& sampler : kSamplers)
+  {
+    vtkTextureObject* texture = targets->Get(sampler.Target);
+    if (texture && program->IsUniformUsed(sampler.Name))
+    {
+      texture->Activate();
+      program->SetUniformi(sampler.Name, texture->GetTextureUnit());
+      bound.push_back(texture);
+    }
+  }
+  vtkTextureObject* front = targets->Get(vtkRefractionTargets::FRONT_SURFACE);
+  const float size[2] = { static_cast<float>(front->GetWidth()),
+    static_cast<float>(front->GetHeight()) };
+  program->SetUniform2f("rfSize", size);
+  this->CoarseResolveQuad->Render();
+  for (vtkTextureObject* texture : bound)
+  {
+    texture->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkShaderProgram* vtkRefractionShadeStage::ReadyQuad(vtkOpenGLRenderWindow* renWin,
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad, const std::string& fragmentSource,
+  const std::string& vertexSource)
+{
+  if (!quad)
+  {
+    quad.reset(new vtkOpenGLQuadHelper(renWin, vertexSource.c_str(), fragmentSource.c_str(), ""));
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(quad->Program);
+  }
+  if (!quad->Program || !quad->Program->GetCompiled())
+  {
+    vtkErrorMacro("Could not build a program of the coarse shading; the glass is traced at "
+                  "every pixel.");
+    return nullptr;
+  }
+  return quad->Program;
 }
 
 //------------------------------------------------------------------------------
@@ -638,7 +825,8 @@ vtkSmartPointer<vtkImageData> vtkRefractionShadeStage::RenderDebug(vtkOpenGLRend
     ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglDisable(GL_DEPTH_TEST);
-    this->Draw(ren, method, settings, targets, frame, materialIOR, materialSheet, true);
+    this->Draw(
+      ren, method, settings, targets, frame, materialIOR, materialSheet, PROGRAM_DEBUG);
     for (int i = 0; i < 2; ++i)
     {
       pixels[i].resize(4 * count);
@@ -686,7 +874,7 @@ vtkSmartPointer<vtkImageData> vtkRefractionShadeStage::RenderDebug(vtkOpenGLRend
 //------------------------------------------------------------------------------
 void vtkRefractionShadeStage::ReleaseGraphicsResources(vtkWindow* w)
 {
-  for (std::unique_ptr<Program>* program : { &this->Shade, &this->Debug })
+  for (std::unique_ptr<Program>* program : { &this->Shade, &this->Debug, &this->CoarseSamples })
   {
     if (*program && (*program)->Quad)
     {
@@ -696,7 +884,7 @@ void vtkRefractionShadeStage::ReleaseGraphicsResources(vtkWindow* w)
   }
   for (std::unique_ptr<vtkOpenGLQuadHelper>* quad :
     { &this->CompositeQuad, &this->CornerCompositeQuad, &this->SmoothQuad,
-      &this->CornerDepthQuad })
+      &this->CornerDepthQuad, &this->CoarseDepthQuad, &this->CoarseResolveQuad })
   {
     if (*quad)
     {

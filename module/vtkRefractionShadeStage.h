@@ -24,6 +24,7 @@
 class vtkImageData;
 class vtkMatrix4x4;
 class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
 class vtkOpenGLRenderer;
 class vtkOpenGLState;
 class vtkOpenGLTexture;
@@ -61,6 +62,10 @@ public:
     // Pixels near one whose ray was totally reflected inside show their neighbourhood's glass
     // (vtkRefractionPass::SetSmoothInternalReflections; not with anti-aliasing's corners).
     bool SmoothInternalReflections = false;
+    // One ray per 2x2 block where the glass is smooth (vtkRefractionPass::SetCoarseShading; not
+    // with anti-aliasing's corners): the blocks' rays into the coarse targets first, then each
+    // pixel interpolates them or traces its own.
+    bool CoarseShading = false;
     double AbsorptionDistance = 0.0;          // > 0: the data's colour tints the glass
     const std::vector<float>* RedIndex = nullptr;  // dispersion: red indices per material
     const std::vector<float>* BlueIndex = nullptr; // and blue ones (nullptr: no dispersion)
@@ -80,7 +85,8 @@ public:
     float SampleCeiling = 1.f;
   };
 
-  /// The shading program for the method and the pass's settings; false when it does not build.
+  /// The shading program for the method and the pass's settings (with coarse shading, also
+  /// the program of the blocks' rays); false when it does not build.
   bool Prepare(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, vtkRefractionPass* settings,
     const Frame& frame, bool debug);
 
@@ -105,7 +111,34 @@ private:
   void operator=(const vtkRefractionShadeStage&) = delete;
 
   struct Program;
-  Program* GetProgram(bool debug);
+  enum ProgramKind
+  {
+    PROGRAM_SHADE,          // every pixel; with coarse shading, each pixel from the blocks' rays
+    PROGRAM_DEBUG,          // the debug output
+    PROGRAM_COARSE_SAMPLES, // coarse shading: one ray per 2x2 block
+  };
+  Program* GetProgram(int kind);
+  // Builds the program of that kind from the shading source and the defines, unless it was
+  // built from the same defines before.
+  bool Build(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, int kind,
+    const std::string& defines);
+  // Frame::CoarseShading: the rays of the 2x2 blocks whose traced pixel is glass into
+  // COARSE_COLOR and COARSE_RAY, culled by COARSE_Z (made first, shaders/rfCoarseDepthFS.glsl).
+  // False when a program or target is missing (then every pixel traces its own ray).
+  bool DrawCoarseSamples(vtkOpenGLRenderer* ren, vtkRefractionMethod* method,
+    vtkRefractionPass* settings, vtkRefractionTargets* targets, const Frame& frame,
+    const std::vector<float>& materialIOR, const std::vector<float>& materialSheet);
+  // Frame::CoarseShading, into the colour attached now with TRACE_Z attached (depth test
+  // GL_ALWAYS, depth writes on), over the glass's rectangle: the pixels the blocks' rays stand
+  // for take their colour, and the depth is 0 where a glass pixel must trace its own ray, 1
+  // elsewhere (shaders/rfCoarseResolveFS.glsl).
+  void ResolveCoarseSamples(
+    vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, const Frame& frame);
+  // A full-screen quad's program made ready (built the first time); nullptr, with an error,
+  // when it does not build.
+  vtkShaderProgram* ReadyQuad(vtkOpenGLRenderWindow* renWin,
+    std::unique_ptr<vtkOpenGLQuadHelper>& quad, const std::string& fragmentSource,
+    const std::string& vertexSource);
   // Mip levels for the renderer's cube map where it has none and is filtered linearly, so that
   // the filtered lookups (rfEnvironment) can average over a ray's spread: VTK 9.1's
   // vtkEquirectangularToCubeMapTexture fixes its minification filter to linear and makes no
@@ -114,7 +147,7 @@ private:
   static void AddEnvironmentMipmaps(vtkOpenGLTexture* cube);
   void Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* method, vtkRefractionPass* settings,
     vtkRefractionTargets* targets, const Frame& frame, const std::vector<float>& materialIOR,
-    const std::vector<float>& materialSheet, bool debug);
+    const std::vector<float>& materialSheet, int kind);
 
   // The glass colour target into the framebuffer bound now, with the glass's depth; with
   // anti-aliasing (corners) each pixel averages its four corners over the scene.
@@ -131,10 +164,14 @@ private:
   void DrawCornerDepth(vtkOpenGLRenderer* ren, vtkTextureObject* frontDepth);
   std::unique_ptr<Program> Shade;
   std::unique_ptr<Program> Debug;
+  std::unique_ptr<Program> CoarseSamples;
   std::unique_ptr<vtkOpenGLQuadHelper> CompositeQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CornerCompositeQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> SmoothQuad;
   std::unique_ptr<vtkOpenGLQuadHelper> CornerDepthQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> CoarseDepthQuad;
+  std::unique_ptr<vtkOpenGLQuadHelper> CoarseResolveQuad;
+  std::string CoarseResolveDefines;
 };
 
 #endif

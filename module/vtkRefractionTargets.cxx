@@ -51,6 +51,13 @@ const TargetFormat kFormats[vtkRefractionTargets::TARGET_COUNT] = {
   { "front SH exit", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "debug P2", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "debug T2", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
+  // Filtered: a pixel between the traced ones reads their mean in one lookup.
+  { "coarse colour", 4, GL_RGBA16F, GL_RGBA, vtkTextureObject::Linear },
+  // 32-bit: the mean of the blocks' exit directions is compared with unit length to 5e-4,
+  // which half floats' rounding of each component (up to 5e-4) made fail at random pixels.
+  { "coarse ray", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Linear },
+  { "coarse z-buffer", 0, 0, 0, vtkTextureObject::Nearest },
+  { "trace z-buffer", 0, 0, 0, vtkTextureObject::Nearest },
 };
 
 vtkSmartPointer<vtkTextureObject> MakeColorTexture(vtkOpenGLRenderWindow* renWin, int width,
@@ -141,6 +148,11 @@ void vtkRefractionTargets::Allocate(vtkOpenGLRenderWindow* renWin, int target)
     {
       depth->AllocateDepthStencil(this->Width, this->Height);
     }
+    else if (target == COARSE_Z)
+    {
+      depth->AllocateDepth(
+        (this->Width + 1) / 2, (this->Height + 1) / 2, vtkTextureObject::Float32);
+    }
     else
     {
       depth->AllocateDepth(this->Width, this->Height,
@@ -150,10 +162,15 @@ void vtkRefractionTargets::Allocate(vtkOpenGLRenderWindow* renWin, int target)
   }
   else
   {
-    // PEEL's slots, and one row more for the count of layers found (its first texel).
-    const int rows = target == PEEL_SLOTS ? this->Height * this->PeelSlots + 1 : this->Height;
+    // PEEL's slots, and one row more for the count of layers found (its first texel); the
+    // coarse shading's targets, a texel per 2x2 block of pixels.
+    const bool coarse = target == COARSE_COLOR || target == COARSE_RAY;
+    const int columns = coarse ? (this->Width + 1) / 2 : this->Width;
+    const int rows = target == PEEL_SLOTS ? this->Height * this->PeelSlots + 1
+      : coarse                            ? (this->Height + 1) / 2
+                                          : this->Height;
     this->Targets[target] = MakeColorTexture(
-      renWin, this->Width, rows, f.Components, f.InternalFormat, f.Format, f.Filter);
+      renWin, columns, rows, f.Components, f.InternalFormat, f.Format, f.Filter);
   }
   this->TargetBytes[target] = MeasureBytes(this->Targets[target]);
   this->MipmapsCounted[target] = false;

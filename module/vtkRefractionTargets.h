@@ -62,6 +62,15 @@ public:
     FRONT_SH,          ///< RGBA32F: the SH method's exit direction (view space) and length
     DEBUG_0,           ///< RGBA32F: P2 and |P2 - P1|
     DEBUG_1,           ///< RGBA32F: T2 and the flags
+    COARSE_COLOR,      ///< RGBA16F, filtered, half the width and height (rounded up): the
+                       ///< colour traced at the lower-left pixel of each 2x2 block and the
+                       ///< glass's -z_view there (CoarseShading)
+    COARSE_RAY,        ///< RGBA32F, filtered, as COARSE_COLOR: that ray's exit direction and
+                       ///< material + 1; 0 where no glass, or where it was reflected inside
+    COARSE_Z,          ///< DEPTH32F, as COARSE_COLOR: the front depth at each block's traced
+                       ///< pixel, which culls the blocks without glass
+    TRACE_Z,           ///< DEPTH32F: 0 at the glass pixels the blocks' rays do not stand
+                       ///< for, 1 elsewhere: culls the pixels that need no ray of their own
     TARGET_COUNT
   };
   static const char* GetTargetName(int target);

@@ -11,7 +11,8 @@
 // RF_SCENE_STEPS, RF_TINT, RF_DISPERSION, RF_MAX_MATERIALS, RF_DEBUG_OUTPUT, RF_CORNER_SAMPLES
 // (anti-aliasing: the pixels' corners instead of the pixels), RF_FILTERED_LOOKUPS,
 // RF_SMOOTH_INTERNAL_REFLECTIONS (rfReflectedFilter.glsl: the pixels whose ray was totally
-// reflected inside are marked in alpha) and the method's own.
+// reflected inside are marked in alpha), RF_COARSE_SAMPLES (coarse shading: the rays of the
+// 2x2 blocks, which rfCoarseResolveFS.glsl spreads over their pixels) and the method's own.
 in vec2 texCoord;
 uniform sampler2D rfFrontSurface;
 #ifdef RF_TINT
@@ -488,8 +489,9 @@ vec3 rfRayColour(rfRay ray, vec4 reflectedFootprint, vec4 transmittedFootprint)
 
 // The share of a pixel's spread a lookup is averaged over: all of it at the pixels' centres;
 // half at their corners (RF_CORNER_SAMPLES), whose four samples the composite averages
-// already, one pixel apart.
-#ifdef RF_CORNER_SAMPLES
+// already, one pixel apart, and at the rays of the 2x2 blocks (RF_COARSE_SAMPLES), two pixels
+// apart, each standing for its own pixel.
+#if defined(RF_CORNER_SAMPLES) || defined(RF_COARSE_SAMPLES)
 #define RF_LOOKUP_WIDTH_SCALE 0.5
 #else
 #define RF_LOOKUP_WIDTH_SCALE 1.0
@@ -527,10 +529,10 @@ vec4 rfFootprintAcrossPixel(vec3 direction, float glass)
 // of its colour channels traced (with dispersion each channel follows the ray of its own
 // index; the green one is the ray of the debug output), how much each ray's directions
 // spread across the pixel, then the lookups over that width; and whether the ray was totally
-// reflected inside the glass. Every pixel of the 2x2 block must call it, glass or not
-// (rfFootprintAcrossPixel).
+// reflected inside the glass, and where it left (exitDirection, the green ray's). Every
+// pixel of the 2x2 block must call it, glass or not (rfFootprintAcrossPixel).
 vec3 rfShadeColour(bool glass, vec2 tc, vec3 N1, float depth, int material,
-  out bool reflectedInside)
+  out bool reflectedInside, out vec3 exitDirection)
 {
   rfRay ray = rfNoRay();
 #ifdef RF_DISPERSION
@@ -546,6 +548,7 @@ vec3 rfShadeColour(bool glass, vec2 tc, vec3 N1, float depth, int material,
 #endif
   }
   reflectedInside = ray.reflectedInside;
+  exitDirection = ray.T2;
   float defined = glass ? 1.0 : 0.0;
   vec4 transmittedFootprint = rfFootprintAcrossPixel(ray.T2, defined);
   vec4 reflectedFootprint = rfFootprintAcrossPixel(reflect(ray.V, ray.N1), defined);
@@ -615,9 +618,10 @@ vec4 rfCornerSample()
   bool glass = count >= 2.0 && dot(normal, normal) > 0.0;
   int index = clamp(int(material) - 1, 0, RF_MAX_MATERIALS - 1);
   bool reflectedInside;
+  vec3 exitDirection;
   vec3 colour = rfShadeColour(glass, vec2(rfPixel) / rfViewport.zw,
     glass ? normalize(normal) : vec3(0.0, 0.0, 1.0), glass ? depth / count : 0.0, index,
-    reflectedInside);
+    reflectedInside, exitDirection);
   if (!glass)
   {
     return vec4(0.0);
@@ -632,6 +636,26 @@ vec4 rfCornerSample()
 
 void main()
 {
+#ifdef RF_COARSE_SAMPLES
+  // One ray per 2x2 block, at its lower-left pixel (this program's viewport is the coarse
+  // targets', a texel per block: the window's size halved, rounded up; their depth buffer
+  // culls the blocks whose pixel has no glass, which keep the 0 they were cleared to).
+  rfPixel = 2 * ivec2(texCoord * ceil(0.5 * rfViewport.zw));
+  vec2 rfSampleTC = (vec2(rfPixel) + 0.5) / rfViewport.zw;
+  vec4 rfFront = texelFetch(rfFrontSurface, rfPixel, 0);
+  bool rfGlass = rfFront.w > 0.5;
+  int rfMaterial = clamp(int(rfFront.w + 0.5) - 1, 0, RF_MAX_MATERIALS - 1);
+  vec3 rfN1 = rfGlass ? rf_oct_decode(rfFront.xy) : vec3(0.0, 0.0, 1.0);
+  bool rfReflectedInside;
+  vec3 rfExit;
+  vec3 rfColour = rfShadeColour(
+    rfGlass, rfSampleTC, rfN1, rfFront.z, rfMaterial, rfReflectedInside, rfExit);
+  gl_FragData[0] = rfGlass ? vec4(rfKeptSample(rfColour), rfFront.z) : vec4(0.0);
+  gl_FragData[1] =
+    rfGlass && !rfReflectedInside
+    ? vec4(rfExit / max(length(rfExit), 1e-20), floor(rfFront.w + 0.5))
+    : vec4(0.0);
+#else
   rfPixel = ivec2(texCoord * rfViewport.zw);
 #if defined(RF_CORNER_SAMPLES) && !defined(RF_DEBUG_OUTPUT)
   gl_FragData[0] = rfCornerSample();
@@ -650,8 +674,9 @@ void main()
   gl_FragData[1] = vec4(rfCentre.T2, 1.0 + float(rfCentre.tir));
 #else
   bool rfReflectedInside;
+  vec3 rfExit;
   vec3 rfColour =
-    rfShadeColour(rfGlass, texCoord, rfN1, rfFront.z, rfMaterial, rfReflectedInside);
+    rfShadeColour(rfGlass, texCoord, rfN1, rfFront.z, rfMaterial, rfReflectedInside, rfExit);
   if (!rfGlass)
   {
     discard; // no glass here: only now, after the block's derivatives (rfShadeColour)
@@ -666,6 +691,7 @@ void main()
     vec4(rfKeptSample(rfColour), rfReflectedInside ? RF_REFLECTED_INSIDE_ALPHA : 1.0);
 #else
   gl_FragData[0] = vec4(rfKeptSample(rfColour), 1.0);
+#endif
 #endif
 #endif
 #endif

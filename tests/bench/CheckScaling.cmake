@@ -1,11 +1,12 @@
 # The scaling sweep's smoke run wrote what --scaling promises: scaling.csv with a row per cell
-# (3 in --smoke) and method (plain VTK and the 5 glass methods), each with its repeats, a
+# (3 in --smoke) and method (plain VTK, the 5 glass methods and DIR 5 with coarse shading),
+# each with its repeats, a
 # positive median inside its extremes, plain's ratio 1 and ISR's precomputation; scaling.md;
 # and the two plots. -DDIR=the run's --out, -DREPEATS=its --repeats.
 file(STRINGS "${DIR}/scaling.csv" lines)
 list(LENGTH lines count)
-if (NOT count EQUAL 19)
-  message(FATAL_ERROR "scaling.csv: ${count} lines, expected a header and 3 x 6 rows")
+if (NOT count EQUAL 22)
+  message(FATAL_ERROR "scaling.csv: ${count} lines, expected a header and 3 x 7 rows")
 endif ()
 list(GET lines 0 header)
 if (NOT header STREQUAL "method,triangles,width,height,repeats,ms_median,ms_min,ms_max,ratio_median,ratio_min,ratio_max,precompute_ms,bytes_per_pixel")
@@ -31,7 +32,7 @@ foreach (line IN LISTS lines)
     message(FATAL_ERROR "scaling.csv: median ${median} ms not positive or outside ${low}-${high}: '${line}'")
   endif ()
   if (method STREQUAL "plain VTK")
-    math(EXPR plainRepeats "5 * ${REPEATS}")
+    math(EXPR plainRepeats "6 * ${REPEATS}")
     if (NOT repeats EQUAL plainRepeats OR NOT ratio EQUAL 1)
       message(FATAL_ERROR "scaling.csv: plain VTK's row should hold every job's plain render: '${line}'")
     endif ()
@@ -43,7 +44,7 @@ foreach (line IN LISTS lines)
   endif ()
 endforeach ()
 list(REMOVE_DUPLICATES methods)
-if (NOT methods STREQUAL "plain VTK;DIR 5;SIR;ISR;SSP;PEEL 4")
+if (NOT methods STREQUAL "plain VTK;DIR 5;DIR 5 coarse;SIR;ISR;SSP;PEEL 4")
   message(FATAL_ERROR "scaling.csv: methods ${methods}")
 endif ()
 foreach (name scaling.md scaling_triangles.png scaling_pixels.png)

@@ -1,11 +1,13 @@
 // The shading stage runs only where a depth test ahead of its program lets it
-// (vtkRefractionShadeStage: the front capture's depth buffer, or with anti-aliasing the corner
-// depth buffer), and the composite shows what it wrote. So every pixel (every corner) the
+// (vtkRefractionShadeStage: the front capture's depth buffer, with anti-aliasing the corner
+// depth buffer, with coarse shading the blocks' and the trace's depth buffers), and the
+// composite shows what it wrote. So every pixel (every corner) the
 // composite reads must have been shaded in this frame. A pass that drew the glass a little
 // elsewhere in the frame before and a fresh pass must then draw the moved glass identically:
 // a pixel or corner culled wrongly would show the earlier frame's colour through the first and
-// the never-written target through the second. With and without anti-aliasing; the glass must
-// cover enough of the picture for "identical" to mean something.
+// the never-written target through the second. Pixel by pixel, with anti-aliasing and with
+// coarse shading; the glass must cover enough of the picture for "identical" to mean
+// something.
 #include "vtkRefractionPass.h"
 
 #include "rfTestScene.h"
@@ -29,12 +31,19 @@ int main()
 
   window->Render(); // no pass: the background wherever the glass is not
   vtkSmartPointer<vtkImageData> plain = rftest::Grab(window);
-  for (bool antiAliasing : { false, true })
+  enum Mode
   {
-    const char* name = antiAliasing ? "anti-aliased" : "pixels";
+    PIXELS,
+    ANTI_ALIASED,
+    COARSE
+  };
+  for (int mode : { PIXELS, ANTI_ALIASED, COARSE })
+  {
+    const char* name = mode == ANTI_ALIASED ? "anti-aliased" : mode == COARSE ? "coarse" : "pixels";
     vtkNew<vtkRefractionPass> used;
     used->SetEnvironmentModeToBuiltin();
-    used->SetAntiAliasing(antiAliasing);
+    used->SetAntiAliasing(mode == ANTI_ALIASED);
+    used->SetCoarseShading(mode == COARSE);
     renderer->SetPass(used);
     actor->SetPosition(-0.12, 0.08, 0.0);
     window->Render();
@@ -44,7 +53,8 @@ int main()
 
     vtkNew<vtkRefractionPass> fresh;
     fresh->SetEnvironmentModeToBuiltin();
-    fresh->SetAntiAliasing(antiAliasing);
+    fresh->SetAntiAliasing(mode == ANTI_ALIASED);
+    fresh->SetCoarseShading(mode == COARSE);
     renderer->SetPass(fresh);
     window->Render();
     vtkSmartPointer<vtkImageData> firstFrame = rftest::Grab(window);

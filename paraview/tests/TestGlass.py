@@ -306,6 +306,8 @@ def case_properties(scene):
             lambda: setattr(view, "GlassAbsorptionDistance", 0.0))
     changes("GlassAntiAliasing=1", lambda: setattr(view, "GlassAntiAliasing", 1),
             lambda: setattr(view, "GlassAntiAliasing", 0))
+    changes("GlassCoarseShading=1", lambda: setattr(view, "GlassCoarseShading", 1),
+            lambda: setattr(view, "GlassCoarseShading", 0))
     changes("GlassExitReflection=1", lambda: setattr(view, "GlassExitReflection", 1),
             lambda: setattr(view, "GlassExitReflection", 0))
     changes("IndexOfRefraction=1.33", lambda: setattr(display, "IndexOfRefraction", 1.33),

@@ -192,6 +192,7 @@ vtkGlassRenderViewSetting(SceneRefraction, int, SetSceneRefraction, GetSceneRefr
 vtkGlassRenderViewSetting(TintFromColours, int, SetDataColour, GetDataColour);
 vtkGlassRenderViewSetting(AbsorptionDistance, double, SetAbsorptionDistance, GetAbsorptionDistance);
 vtkGlassRenderViewSetting(AntiAliasing, int, SetAntiAliasing, GetAntiAliasing);
+vtkGlassRenderViewSetting(CoarseShading, int, SetCoarseShading, GetCoarseShading);
 vtkGlassRenderViewSetting(Layers, int, SetPeelLayers, GetPeelLayers);
 vtkGlassRenderViewSetting(TIRBounces, int, SetTIRBounces, GetTIRBounces);
 vtkGlassRenderViewSetting(ExitReflection, int, SetExitReflection, GetExitReflection);

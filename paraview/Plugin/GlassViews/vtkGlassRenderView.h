@@ -51,8 +51,8 @@ public:
 
   ///@{
   /// The pass's settings (see vtkRefractionPass): EnvironmentMode, SceneRefraction,
-  /// DataColour, AbsorptionDistance, AntiAliasing, PeelLayers, TIRBounces, ExitReflection and
-  /// SmoothInternalReflections.
+  /// DataColour, AbsorptionDistance, AntiAliasing, CoarseShading, PeelLayers, TIRBounces,
+  /// ExitReflection and SmoothInternalReflections.
   void SetGlassEnvironment(int mode);
   int GetGlassEnvironment();
   void SetGlassSceneRefraction(int on);
@@ -63,6 +63,8 @@ public:
   double GetGlassAbsorptionDistance();
   void SetGlassAntiAliasing(int on);
   int GetGlassAntiAliasing();
+  void SetGlassCoarseShading(int on);
+  int GetGlassCoarseShading();
   void SetGlassLayers(int layers);
   int GetGlassLayers();
   void SetGlassTIRBounces(int bounces);

@@ -541,8 +541,12 @@ void vtkRefractionShadeStage::ResolveCoarseSamples(
     this->CoarseResolveQuad.reset();
   }
   this->CoarseResolveDefines = defines;
-  std::string source = rfCoarseResolveFSSource;
-  vtkShaderProgram::Substitute(source, "in vec2 texCoord;", "in vec2 texCoord;\n" + defines);
+  std::string source;
+  if (!this->CoarseResolveQuad) // the source only when the program is made
+  {
+    source = rfCoarseResolveFSSource;
+    vtkShaderProgram::Substitute(source, "in vec2 texCoord;", "in vec2 texCoord;\n" + defines);
+  }
   vtkShaderProgram* program = this->ReadyQuad(renWin, this->CoarseResolveQuad, source,
     vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader());
   if (!program)

@@ -113,7 +113,7 @@ private:
   struct Program;
   enum ProgramKind
   {
-    PROGRAM_SHADE,          // every pixel; with coarse shading, each pixel from the blocks' rays
+    PROGRAM_SHADE,          // every pixel (coarse shading: those the blocks do not stand for)
     PROGRAM_DEBUG,          // the debug output
     PROGRAM_COARSE_SAMPLES, // coarse shading: one ray per 2x2 block
   };
@@ -134,8 +134,8 @@ private:
   // elsewhere (shaders/rfCoarseResolveFS.glsl).
   void ResolveCoarseSamples(
     vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, const Frame& frame);
-  // A full-screen quad's program made ready (built the first time); nullptr, with an error,
-  // when it does not build.
+  // A full-screen quad's program made ready (built from the sources the first time, when
+  // `quad` is empty); nullptr, with an error, when it does not build.
   vtkShaderProgram* ReadyQuad(vtkOpenGLRenderWindow* renWin,
     std::unique_ptr<vtkOpenGLQuadHelper>& quad, const std::string& fragmentSource,
     const std::string& vertexSource);

@@ -425,7 +425,15 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
     {
       ostate->vtkglDepthFunc(GL_ALWAYS);
       ostate->vtkglDepthMask(GL_TRUE);
-      this->ResolveCoarseSamples(ren, targets, frame);
+      if (!this->ResolveCoarseSamples(ren, targets, frame))
+      {
+        // No resolve: depth 0 everywhere, so that every pixel traces its own ray.
+        double clearDepth = 1.0;
+        ostate->vtkglGetDoublev(GL_DEPTH_CLEAR_VALUE, &clearDepth);
+        ostate->vtkglClearDepth(0.0);
+        ostate->vtkglClear(GL_DEPTH_BUFFER_BIT);
+        ostate->vtkglClearDepth(clearDepth);
+      }
       ostate->vtkglDepthFunc(GL_GREATER);
     }
     ostate->vtkglDepthMask(GL_FALSE);
@@ -530,7 +538,7 @@ bool vtkRefractionShadeStage::DrawCoarseSamples(vtkOpenGLRenderer* ren,
 }
 
 //------------------------------------------------------------------------------
-void vtkRefractionShadeStage::ResolveCoarseSamples(
+bool vtkRefractionShadeStage::ResolveCoarseSamples(
   vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, const Frame& frame)
 {
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
@@ -551,7 +559,7 @@ void vtkRefractionShadeStage::ResolveCoarseSamples(
     vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader());
   if (!program)
   {
-    return; // every pixel traces its own ray
+    return false;
   }
   std::vector<vtkTextureObject*> bound;
   for (const TargetSampler& sampler : kSamplers)
@@ -573,6 +581,7 @@ void vtkRefractionShadeStage::ResolveCoarseSamples(
   {
     texture->Deactivate();
   }
+  return true;
 }
 
 //------------------------------------------------------------------------------

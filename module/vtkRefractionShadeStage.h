@@ -131,8 +131,8 @@ private:
   // Frame::CoarseShading, into the colour attached now with TRACE_Z attached (depth test
   // GL_ALWAYS, depth writes on), over the glass's rectangle: the pixels the blocks' rays stand
   // for take their colour, and the depth is 0 where a glass pixel must trace its own ray, 1
-  // elsewhere (shaders/rfCoarseResolveFS.glsl).
-  void ResolveCoarseSamples(
+  // elsewhere (shaders/rfCoarseResolveFS.glsl). False when its program does not build.
+  bool ResolveCoarseSamples(
     vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, const Frame& frame);
   // A full-screen quad's program made ready (built from the sources the first time, when
   // `quad` is empty); nullptr, with an error, when it does not build.

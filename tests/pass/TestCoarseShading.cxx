@@ -2,11 +2,13 @@
 // is smooth, each pixel's own elsewhere. In VTK's default (multisampled) window, at a size with
 // an odd width and height, two glass actors of different indices overlapping (a material edge
 // and a depth jump inside the picture), every frame without a message or an OpenGL error:
-// - the coarse picture is not the full one (the blocks' rays were used) and is close to it on
-//   the glass: 27.4 dB here when this was written (32.9 dB on a 512 px sphere), 25 required;
+// - the coarse picture is not the full one (the blocks' rays were used: with the resolve's
+//   program broken, every pixel traced, this test fails here) and is close to it on the
+//   glass: 36.8 dB when this was written (27.4 before the resolve's contrast test), 25
+//   required;
 // - the pixels the blocks cannot stand for are traced: at the silhouettes and along the edge
-//   between the two actors the coarse picture is as close to the full one as inside (32.6 dB
-//   when written; 16.5 dB with every pixel interpolated, which this test then fails);
+//   between the two actors the coarse picture is close to the full one too (34.0 dB when
+//   written; 16.5 dB with every pixel interpolated, which this test then fails);
 // - with the data's colour, dispersion and the smoothing of internal reflections the coarse
 //   picture stays close to the full one with the same settings;
 // - SIR, SSP and PEEL (the methods without a precomputation) the same;

@@ -460,13 +460,13 @@ public:
    * Fewer rays than pixels (off by default): the refraction is traced at one pixel of each
    * 2x2 block, and every pixel whose neighbouring traced pixels lie on the same smooth part of
    * the glass (its own material, a depth within 2 % of its own, exit directions within about
-   * 2 degrees of each other, no ray reflected inside) takes their colours interpolated. The
-   * other pixels (the silhouettes, edges between actors, creases and jumps of the exit, rays
-   * reflected inside) are traced as without it. The shading's cost drops toward a quarter
-   * where the glass covers much of a large window (on llvmpipe a full-window sphere at 2048 px:
-   * 5.4 -> 3.9 times plain VTK); the interpolation blurs what the glass shows over two pixels
-   * (at 512 px up to 3.6 dB further from the ray-traced truth, for little time there), so it
-   * trades error for time (docs/benchmark.md, *Coarse shading*). Costs an RGBA16F, an RGBA32F
+   * 2 degrees of each other, no ray reflected inside, colours within 0.1 of each other) takes
+   * their colours interpolated. The other pixels (the silhouettes, edges between actors,
+   * creases and jumps of the exit, rays reflected inside, edges of what the glass shows) are
+   * traced as without it. Where the glass covers much of a large window the frame is shorter
+   * (on llvmpipe a full-window sphere at 2048 px: 5.2 -> 4.4 times plain VTK); at 512 px it
+   * read 0.1-0.3 dB below the full shading against the ray-traced truth, for little time
+   * there (docs/benchmark.md, *Coarse shading*). Costs an RGBA16F, an RGBA32F
    * and a DEPTH32F target of a quarter of the pixels and a DEPTH32F target of all of them.
    * Not with AntiAliasing (which wins).
    */

@@ -74,6 +74,26 @@ const TargetSampler kSamplers[] = {
 };
 }
 
+namespace
+{
+// Binds every allocated target whose sampler the program reads; returns them, to deactivate.
+std::vector<vtkTextureObject*> BindTargets(vtkShaderProgram* program, vtkRefractionTargets* targets)
+{
+  std::vector<vtkTextureObject*> bound;
+  for (const TargetSampler& sampler : kSamplers)
+  {
+    vtkTextureObject* texture = targets->Get(sampler.Target);
+    if (texture && program->IsUniformUsed(sampler.Name))
+    {
+      texture->Activate();
+      program->SetUniformi(sampler.Name, texture->GetTextureUnit());
+      bound.push_back(texture);
+    }
+  }
+  return bound;
+}
+}
+
 //------------------------------------------------------------------------------
 vtkRefractionShadeStage::vtkRefractionShadeStage() = default;
 vtkRefractionShadeStage::~vtkRefractionShadeStage() = default;
@@ -242,17 +262,7 @@ void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* 
     ->GetShaderCache()
     ->ReadyShaderProgram(shader);
   vtkTextureObject* front = targets->Get(vtkRefractionTargets::FRONT_SURFACE);
-  std::vector<vtkTextureObject*> bound;
-  for (const TargetSampler& sampler : kSamplers)
-  {
-    vtkTextureObject* texture = targets->Get(sampler.Target);
-    if (texture && shader->IsUniformUsed(sampler.Name))
-    {
-      texture->Activate();
-      shader->SetUniformi(sampler.Name, texture->GetTextureUnit());
-      bound.push_back(texture);
-    }
-  }
+  std::vector<vtkTextureObject*> bound = BindTargets(shader, targets);
   const auto& levels = targets->GetReductionLevels();
   if (!levels.empty() && shader->IsUniformUsed("rfDepthRangeTex"))
   {
@@ -381,11 +391,7 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
   fbo->SaveCurrentBindingsAndBuffers();
   fbo->Bind();
   fbo->AddColorAttachment(0, shaded ? shaded : glassColour);
-  fbo->AddDepthAttachment(corners ? cornerDepth : frontDepth);
-  if (traceDepth)
-  {
-    fbo->AddDepthAttachment(traceDepth);
-  }
+  fbo->AddDepthAttachment(traceDepth ? traceDepth : corners ? cornerDepth : frontDepth);
   fbo->ActivateDrawBuffers(1);
   {
     vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
@@ -561,17 +567,7 @@ bool vtkRefractionShadeStage::ResolveCoarseSamples(
   {
     return false;
   }
-  std::vector<vtkTextureObject*> bound;
-  for (const TargetSampler& sampler : kSamplers)
-  {
-    vtkTextureObject* texture = targets->Get(sampler.Target);
-    if (texture && program->IsUniformUsed(sampler.Name))
-    {
-      texture->Activate();
-      program->SetUniformi(sampler.Name, texture->GetTextureUnit());
-      bound.push_back(texture);
-    }
-  }
+  const std::vector<vtkTextureObject*> bound = BindTargets(program, targets);
   vtkTextureObject* front = targets->Get(vtkRefractionTargets::FRONT_SURFACE);
   const float size[2] = { static_cast<float>(front->GetWidth()),
     static_cast<float>(front->GetHeight()) };

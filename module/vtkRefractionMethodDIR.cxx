@@ -16,6 +16,12 @@ void vtkRefractionMethodDIR::AppendDefines(std::ostream& defines, vtkRefractionP
   {
     defines << "#define RF_ADAPTIVE_SEARCH\n";
   }
+  else
+  {
+    // One count for every pixel: the search's loop gets a constant bound (rf_kernel_dir.h,
+    // RF_KERNEL_SEARCH_LOOP_STEPS), and a change of SearchSteps builds the program again.
+    defines << "#define RF_FIXED_SEARCH_STEPS " << settings->GetSearchSteps() << "\n";
+  }
   if (settings->GetSecantRefinement())
   {
     defines << "#define RF_SECANT_REFINE\n";
@@ -44,7 +50,10 @@ std::string vtkRefractionMethodDIR::GetShaderSource() const
 void vtkRefractionMethodDIR::SetUniforms(
   vtkShaderProgram* program, vtkRefractionPass* settings, const double boundsDepthRange[2]) const
 {
-  program->SetUniformi("rfSearchSteps", settings->GetSearchSteps());
+  if (program->IsUniformUsed("rfSearchSteps"))
+  {
+    program->SetUniformi("rfSearchSteps", settings->GetSearchSteps());
+  }
   if (program->IsUniformUsed("rfDepthRangeBounds"))
   {
     const float range[2] = { static_cast<float>(boundsDepthRange[0]),

@@ -168,8 +168,13 @@ bool vtkRefractionShadeStage::Prepare(vtkOpenGLRenderer* ren, vtkRefractionMetho
   }
   if (frame.Highlights && frame.Lights && frame.Lights->GetNumberOfLights() > 0)
   {
+    // The lights' loop runs to a constant, their number: llvmpipe runs every pass of a loop
+    // bounded by a constant and left by a break (up to RF_MAX_LIGHTS: 8), and a loop bounded by
+    // a uniform costs more than its passes there (rf_kernel_dir.h, RF_FIXED_SEARCH_STEPS). A
+    // change in the number of lights builds the program again.
     defines << "#define RF_HIGHLIGHTS\n#define RF_MAX_LIGHTS "
-            << vtkRefractionLights::MaximumLights << "\n";
+            << vtkRefractionLights::MaximumLights << "\n#define RF_LIGHT_COUNT "
+            << frame.Lights->GetNumberOfLights() << "\n";
   }
   if (frame.SceneRefraction)
   {
@@ -326,7 +331,6 @@ void vtkRefractionShadeStage::Draw(vtkOpenGLRenderer* ren, vtkRefractionMethod* 
     std::vector<float> colours(frame.Lights->GetColours());
     positions.resize(4 * vtkRefractionLights::MaximumLights, 0.f);
     colours.resize(3 * vtkRefractionLights::MaximumLights, 0.f);
-    shader->SetUniformi("rfLightCount", frame.Lights->GetNumberOfLights());
     shader->SetUniform4fv("rfLightPosition", vtkRefractionLights::MaximumLights, positions.data());
     shader->SetUniform3fv("rfLightColour", vtkRefractionLights::MaximumLights, colours.data());
   }

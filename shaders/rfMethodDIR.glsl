@@ -3,8 +3,12 @@
 // between the min/max back depths (eq. 3-10) against the captured back surface
 // (rfBackSurface.glsl), refined by one secant step: rfk_dir_search of the kernel
 // (module/core/kernel/rf_kernel_dir.h, the same source the C core and its tests run).
-// Defines: RF_DEPTH_RANGE_BOUNDS, RF_ADAPTIVE_SEARCH, RF_SECANT_REFINE, RF_TIR_BOUNCES.
+// Defines: RF_DEPTH_RANGE_BOUNDS, RF_ADAPTIVE_SEARCH, RF_SECANT_REFINE, RF_TIR_BOUNCES,
+// RF_FIXED_SEARCH_STEPS (the steps, when they are the same for every pixel: without adaptive
+// steps; then no uniform rfSearchSteps).
+#ifndef RF_FIXED_SEARCH_STEPS
 uniform int rfSearchSteps;
+#endif
 #ifdef RF_DEPTH_RANGE_BOUNDS
 uniform vec2 rfDepthRangeBounds;
 #else
@@ -32,7 +36,12 @@ rfk_search_settings rfSearchSettings()
 #else
   bool secant = false;
 #endif
-  return rfk_make_search_settings(rfSearchSteps, adaptive, secant);
+#ifdef RF_FIXED_SEARCH_STEPS
+  int steps = RF_FIXED_SEARCH_STEPS;
+#else
+  int steps = rfSearchSteps;
+#endif
+  return rfk_make_search_settings(steps, adaptive, secant);
 }
 
 bool rfFindExit(vec3 P1, vec3 V, vec3 N1, vec3 T1, float etaIn, out vec3 P2, out vec3 N2)

@@ -227,7 +227,6 @@ float rfMaterialIndexOfRefraction(int material, int channel)
 
 #ifdef RF_HIGHLIGHTS
 uniform vec4 rfMaterialHighlight[RF_MAX_MATERIALS]; // Specular * SpecularColor, SpecularPower
-uniform int rfLightCount;
 uniform vec4 rfLightPosition[RF_MAX_LIGHTS]; // view space: w = 0 direction, w = 1 position
 uniform vec3 rfLightColour[RF_MAX_LIGHTS];   // colour times intensity
 
@@ -242,12 +241,8 @@ vec3 rfHighlight(vec3 P, vec3 V, vec3 N1, int material, float F)
   vec4 highlight = rfMaterialHighlight[material];
   vec3 R = reflect(V, N1);
   vec3 sum = vec3(0.0);
-  for (int i = 0; i < RF_MAX_LIGHTS; ++i)
+  for (int i = 0; i < RF_LIGHT_COUNT; ++i)
   {
-    if (i >= rfLightCount)
-    {
-      break;
-    }
     vec4 light = rfLightPosition[i];
     vec3 L = normalize(light.w > 0.5 ? light.xyz - P : light.xyz);
     if (dot(N1, L) > 0.0)
@@ -473,9 +468,11 @@ vec3 rfRayColour(rfRay ray, vec4 reflectedFootprint, vec4 transmittedFootprint)
 #endif
   // The reflected lookup is one lookup across its footprint's short axis: spread along the long
   // one too it gained 0.1 dB on the torus for a third of the shading's time the long axis adds.
+  // rfEnvironmentLookup, not rfEnvironment with no axis: the same lookup, but llvmpipe runs
+  // both of rfEnvironment's paths for every pixel.
   rfEnvironmentWidth = reflectedFootprint.w;
   rfEnvironmentAxis = vec3(0.0);
-  vec3 colour = F * rfEnvironment(reflect(ray.V, ray.N1)) + (1.0 - F) * transmitted;
+  vec3 colour = F * rfEnvironmentLookup(reflect(ray.V, ray.N1)) + (1.0 - F) * transmitted;
 #ifdef RF_HIGHLIGHTS
   colour += rfHighlight(ray.P1, ray.V, ray.N1, ray.material,
     rfFresnelWeight(-dot(ray.V, ray.N1), ray.etaIn));

@@ -214,7 +214,7 @@ int rfViewerParseOptions(int argc, char* argv[], const std::vector<std::string>&
     { "--anti-aliasing", nullptr, nullptr, &o.AntiAliasing,
       "Anti-alias the glass: the refraction shaded at the pixels' corners, each pixel the average of its four (vtkRefractionPass::SetAntiAliasing; about 1.1-1.5 times the frame time)." },
     { "--coarse-shading", nullptr, nullptr, &o.CoarseShading,
-      "One ray per 2x2 pixels where the glass is smooth, each pixel's own elsewhere (vtkRefractionPass::SetCoarseShading; faster where glass fills a large window, blurs what it shows over two pixels; not with --anti-aliasing)." },
+      "One ray per 2x2 pixels where the glass is smooth, each pixel's own elsewhere (vtkRefractionPass::SetCoarseShading; for large windows on renderers where a ray costs much more than a lookup, blurs what it shows over two pixels; not with --anti-aliasing)." },
     { "--exit-reflection", nullptr, nullptr, &o.ExitReflection,
       "DIR: follow the light the glass's far side reflects back inside to where it leaves (vtkRefractionPass::SetExitReflection; closer to a ray-traced picture, about 1.05-1.1 times the frame time)." },
     { "--smooth-internal-reflections", nullptr, nullptr, &o.SmoothInternalReflections,

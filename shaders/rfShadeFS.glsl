@@ -12,7 +12,10 @@
 // (anti-aliasing: the pixels' corners instead of the pixels), RF_FILTERED_LOOKUPS,
 // RF_SMOOTH_INTERNAL_REFLECTIONS (rfReflectedFilter.glsl: the pixels whose ray was totally
 // reflected inside are marked in alpha), RF_COARSE_SAMPLES (coarse shading: the rays of the
-// 2x2 blocks, which rfCoarseResolveFS.glsl spreads over their pixels) and the method's own.
+// 2x2 blocks, which rfCoarseResolveFS.glsl spreads over their pixels), RF_HIGHLIGHTS with
+// RF_MAX_LIGHTS (the size of the lights' arrays) and RF_LIGHT_COUNT (the renderer's lights: a
+// constant bound, since llvmpipe runs every pass of a loop left by a break and pays more for a
+// loop bounded by a uniform than for its passes) and the method's own.
 in vec2 texCoord;
 uniform sampler2D rfFrontSurface;
 #ifdef RF_TINT

@@ -43,15 +43,17 @@ int main()
   second->SetColor(1.0, 0.6, 0.3);
   second->SetIntensity(2.0);
 
+  auto steps = [](int count) {
+    return [count](vtkRefractionPass* pass, vtkRenderer*) { pass->SetSearchSteps(count); };
+  };
+  auto nothing = [](vtkRefractionPass*, vtkRenderer*) {};
+  auto addSecond = [&second](vtkRefractionPass*, vtkRenderer* r) { r->AddLight(second); };
+  auto removeSecond = [&second](vtkRefractionPass*, vtkRenderer* r) { r->RemoveLight(second); };
   const Check checks[] = {
-    { "search steps 5 -> 1", [](vtkRefractionPass* p, vtkRenderer*) { p->SetSearchSteps(5); },
-      [](vtkRefractionPass* p, vtkRenderer*) { p->SetSearchSteps(1); } },
-    { "search steps 1 -> 5", [](vtkRefractionPass* p, vtkRenderer*) { p->SetSearchSteps(1); },
-      [](vtkRefractionPass* p, vtkRenderer*) { p->SetSearchSteps(5); } },
-    { "a second light", [](vtkRefractionPass*, vtkRenderer*) {},
-      [&second](vtkRefractionPass*, vtkRenderer* r) { r->AddLight(second); } },
-    { "the second light removed",
-      [&second](vtkRefractionPass*, vtkRenderer* r) { r->AddLight(second); }, [&second](vtkRefractionPass*, vtkRenderer* r) { r->RemoveLight(second); } },
+    { "search steps 5 -> 1", steps(5), steps(1) },
+    { "search steps 1 -> 5", steps(1), steps(5) },
+    { "a second light", nothing, addSecond },
+    { "the second light removed", addSecond, removeSecond },
   };
   for (const Check& check : checks)
   {

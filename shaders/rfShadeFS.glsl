@@ -471,10 +471,9 @@ vec3 rfRayColour(rfRay ray, vec4 reflectedFootprint, vec4 transmittedFootprint)
 #endif
   // The reflected lookup is one lookup across its footprint's short axis: spread along the long
   // one too it gained 0.1 dB on the torus for a third of the shading's time the long axis adds.
-  // rfEnvironmentLookup, not rfEnvironment with no axis: the same lookup, but llvmpipe runs
-  // both of rfEnvironment's paths for every pixel.
+  // rfEnvironmentLookup, not rfEnvironment with no axis: the same lookup without the
+  // footprint's loop, which llvmpipe runs at least once for every pixel.
   rfEnvironmentWidth = reflectedFootprint.w;
-  rfEnvironmentAxis = vec3(0.0);
   vec3 colour = F * rfEnvironmentLookup(reflect(ray.V, ray.N1)) + (1.0 - F) * transmitted;
 #ifdef RF_HIGHLIGHTS
   colour += rfHighlight(ray.P1, ray.V, ray.N1, ray.material,

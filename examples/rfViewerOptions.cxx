@@ -211,6 +211,8 @@ int rfViewerParseOptions(int argc, char* argv[], const std::vector<std::string>&
       "Search steps of DIR's binary search, 0 to 16 (default 5)." },
     { "--layers", "K", &o.Layers, nullptr,
       "Layers of the glass peeled for --method peel, 2 to 8 (default 4)." },
+    { "--peel-capture", "auto|peeling|k-buffer", &o.PeelCapture, nullptr,
+      "How --method peel captures its layers behind the front, the same layers either way (vtkRefractionPass::SetPeelCapture): peeling (one draw of the glass per layer), k-buffer (two draws whatever --layers; 3 or more layers, where OpenGL has image load/store), auto (default: the k-buffer from 6 layers where more than 3 hold glass)." },
     { "--anti-aliasing", nullptr, nullptr, &o.AntiAliasing,
       "Anti-alias the glass: the refraction shaded at the pixels' corners, each pixel the average of its four (vtkRefractionPass::SetAntiAliasing; about 1.1-1.5 times the frame time)." },
     { "--coarse-shading", nullptr, nullptr, &o.CoarseShading,
@@ -338,6 +340,16 @@ int rfViewerParseOptions(int argc, char* argv[], const std::vector<std::string>&
   {
     return rfViewerUsage("--layers needs a whole number from 2 to 8, not " + rfViewerQuote(o.Layers));
   }
+  const std::string capture = vtksys::SystemTools::LowerCase(o.PeelCapture);
+  static const char* const captures[] = { "auto", "peeling", "k-buffer" };
+  const auto capturing = std::find(std::begin(captures), std::end(captures), capture);
+  if (capturing == std::end(captures))
+  {
+    return rfViewerUsage(
+      "--peel-capture must be auto, peeling or k-buffer, not " + rfViewerQuote(o.PeelCapture));
+  }
+  // The pass's PEEL_CAPTURE_AUTO, _DEPTH_PEELING and _K_BUFFER, in that order.
+  s.PeelCapture = static_cast<int>(capturing - std::begin(captures));
   if (!ParseInt(o.Steps, 0, 16, s.Steps))
   {
     return rfViewerUsage("--steps needs a whole number from 0 to 16, not " + rfViewerQuote(o.Steps));

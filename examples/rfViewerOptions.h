@@ -23,6 +23,7 @@ struct rfViewerOptions
   std::string Dispersion;
   std::string Steps = "5";
   std::string Layers = "4";
+  std::string PeelCapture = "auto";
   std::string Size = "512";
   std::string Frames;
   std::string Time;
@@ -56,6 +57,7 @@ struct rfViewerSettings
   std::vector<double> Dispersion; // red, green, blue indices; empty: none
   int Steps = 5;
   int Layers = 4;
+  int PeelCapture = vtkRefractionPass::PEEL_CAPTURE_AUTO;
   int Width = 512;
   int Height = 512;
   int Frames = -1; // -1: every time step (or one frame of a static mesh)

@@ -385,6 +385,7 @@ int BuildScene(const rfViewerOptions& o, const rfViewerSettings& s, Scene& scene
   scene.Pass->SetMethod(s.Method);
   scene.Pass->SetSearchSteps(s.Steps);
   scene.Pass->SetPeelLayers(s.Layers);
+  scene.Pass->SetPeelCapture(s.PeelCapture);
   scene.Pass->SetAntiAliasing(o.AntiAliasing);
   scene.Pass->SetCoarseShading(o.CoarseShading);
   scene.Pass->SetExitReflection(o.ExitReflection);

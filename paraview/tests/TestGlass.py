@@ -77,6 +77,10 @@ class Scene:
         self.view.UpdatePropertyInformation()
         return self.view.GetProperty("NumberOfGlassProps").GetElement(0)
 
+    def texture_bytes(self):
+        self.view.UpdatePropertyInformation()
+        return self.view.GetProperty("GlassTextureBytes").GetElement(0)
+
 
 def wall(view):
     """An opaque wall behind the glass, striped through a colour map."""
@@ -320,6 +324,24 @@ def case_properties(scene):
     reference = scene.picture("properties_peel_4")
     changes("GlassLayers=2 (PEEL)", lambda: setattr(view, "GlassLayers", 2),
             lambda: setattr(view, "GlassLayers", 4))
+    # The capture changes how the layers are found, not which: the k-buffer's picture is
+    # depth peeling's, and it holds the slots' bytes (4 a pixel for each of the 7 layers behind
+    # the front, and a row) beside peeling's targets.
+    view.GlassLayers = 8
+    view.GlassPeelCapture = "Depth peeling"
+    peeled = scene.picture("properties_peel_8_peeling")
+    peeled_bytes = scene.texture_bytes()
+    view.GlassPeelCapture = "k-buffer"
+    sorted_layers = scene.picture("properties_peel_8_k_buffer")
+    slot_bytes = scene.texture_bytes() - peeled_bytes
+    view.GlassPeelCapture = "Auto"
+    view.GlassLayers = 4
+    check_that(slot_bytes == 4 * SIZE * (SIZE * 7 + 1),
+            "GlassPeelCapture=k-buffer holds %d bytes more than depth peeling (%d expected)"
+            % (slot_bytes, 4 * SIZE * (SIZE * 7 + 1)))
+    check_that(not differing(sorted_layers, peeled, tolerance=0).any(),
+            "GlassPeelCapture=k-buffer draws depth peeling's picture (%d pixels differ)"
+            % differing(sorted_layers, peeled, tolerance=0).sum())
     view.GlassMethod = "DIR"
     display.IndexOfRefraction = 2.4
     reference = scene.picture("properties_ior_2.4")

@@ -194,6 +194,7 @@ vtkGlassRenderViewSetting(AbsorptionDistance, double, SetAbsorptionDistance, Get
 vtkGlassRenderViewSetting(AntiAliasing, int, SetAntiAliasing, GetAntiAliasing);
 vtkGlassRenderViewSetting(CoarseShading, int, SetCoarseShading, GetCoarseShading);
 vtkGlassRenderViewSetting(Layers, int, SetPeelLayers, GetPeelLayers);
+vtkGlassRenderViewSetting(PeelCapture, int, SetPeelCapture, GetPeelCapture);
 vtkGlassRenderViewSetting(TIRBounces, int, SetTIRBounces, GetTIRBounces);
 vtkGlassRenderViewSetting(ExitReflection, int, SetExitReflection, GetExitReflection);
 vtkGlassRenderViewSetting(SmoothInternalReflections, int, SetSmoothInternalReflections,
@@ -202,6 +203,11 @@ vtkGlassRenderViewSetting(SmoothInternalReflections, int, SetSmoothInternalRefle
 int vtkGlassRenderView::GetNumberOfGlassProps()
 {
   return this->GlassPass->GetNumberOfGlassProps();
+}
+
+double vtkGlassRenderView::GetGlassTextureBytes()
+{
+  return static_cast<double>(this->GlassPass->GetTextureBytes());
 }
 
 double vtkGlassRenderView::GetGlassCompositeMilliseconds()

@@ -51,8 +51,8 @@ public:
 
   ///@{
   /// The pass's settings (see vtkRefractionPass): EnvironmentMode, SceneRefraction,
-  /// DataColour, AbsorptionDistance, AntiAliasing, CoarseShading, PeelLayers, TIRBounces,
-  /// ExitReflection and SmoothInternalReflections.
+  /// DataColour, AbsorptionDistance, AntiAliasing, CoarseShading, PeelLayers, PeelCapture,
+  /// TIRBounces, ExitReflection and SmoothInternalReflections.
   void SetGlassEnvironment(int mode);
   int GetGlassEnvironment();
   void SetGlassSceneRefraction(int on);
@@ -67,6 +67,8 @@ public:
   int GetGlassCoarseShading();
   void SetGlassLayers(int layers);
   int GetGlassLayers();
+  void SetGlassPeelCapture(int mode);
+  int GetGlassPeelCapture();
   void SetGlassTIRBounces(int bounces);
   int GetGlassTIRBounces();
   void SetGlassExitReflection(int on);
@@ -77,6 +79,10 @@ public:
 
   /// Glass props the pass drew in the last render (for tests).
   int GetNumberOfGlassProps();
+
+  /// Bytes of the GPU render targets the pass holds for the last render's method
+  /// (vtkRefractionPass::GetTextureBytes).
+  double GetGlassTextureBytes();
 
   /// The pass itself.
   vtkRefractionPass* GetGlassPass();

@@ -623,7 +623,14 @@ bool vtkRefractionGeometryStage::ReplaceGlassShaderValues(std::string& fragmentS
   // 0, and every back face of the capture was discarded.
   const bool haveColour = fragmentShader.find("vec3 diffuseColor") != std::string::npos &&
     fragmentShader.find("vec3 ambientColor") != std::string::npos;
+  // A composite program of its own draws nothing else: without the G-buffer's code, which
+  // llvmpipe would run beside the composite's for every fragment.
   defines << this->Defines << (this->CompositeProgram ? "#define RF_SAMPLE_COMPOSITE\n" : "")
+          << (this->CompositeProgram && this->SeparateCompositeProgram
+                 ? "#define RF_COMPOSITE_ONLY\n"
+                 : "")
+          << (this->CompositeProgram && this->CompositeInputs[2] ? "#define RF_COMPOSITE_CORNERS\n"
+                                                                : "")
           << "#define RF_DATA_COLOUR "
           << (haveColour ? "vec4(ambientColor + diffuseColor, 1.0)" : "vec4(1.0)")
           << "\n#define RF_EDGE_MIX "
@@ -673,7 +680,6 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
     const bool composite = this->Stage == STAGE_COMPOSITE;
     program->SetUniformi("rfCompositeSurface", composite ? this->CompositeInputs[0] : units - 1);
     program->SetUniformi("rfCompositeColour", composite ? this->CompositeInputs[1] : units - 1);
-    program->SetUniformi("rfCompositeCorners", this->CompositeInputs[2]);
   }
   if (program->IsUniformUsed("rfMaterial"))
   {

@@ -100,12 +100,18 @@ public:
   /// with the GL state the caller set.
   void DrawOnScreen(vtkOpenGLRenderer* ren, int stage);
   /// STAGE_COMPOSITE's inputs: the texture units of FRONT_SURFACE and GLASS_COLOR, and
-  /// whether GLASS_COLOR holds the pixels' corners (anti-aliasing).
+  /// whether GLASS_COLOR holds the pixels' corners (anti-aliasing). The corners are built into
+  /// the program (RF_COMPOSITE_CORNERS): as a uniform, llvmpipe fetched the four corners for
+  /// every fragment, also without anti-aliasing.
   void SetCompositeInputs(int surfaceUnit, int colourUnit, bool corners)
   {
     this->CompositeInputs[0] = surfaceUnit;
     this->CompositeInputs[1] = colourUnit;
-    this->CompositeInputs[2] = corners ? 1 : 0;
+    if (this->CompositeInputs[2] != (corners ? 1 : 0))
+    {
+      this->CompositeInputs[2] = corners ? 1 : 0;
+      this->DefinesTime.Modified();
+    }
   }
 
   /// Props drawn by the last draw.
@@ -128,8 +134,16 @@ public:
   void SetSampleComposite(bool sampleComposite) { this->SampleComposite = sampleComposite; }
   /// Whether the composite's code is compiled in only for the composite's draw (two programs
   /// a frame, a shader-source rebuild at each switch) instead of into every draw of a frame
-  /// that draws it (vtkRefractionPass::SetCompositeProgram).
-  void SetSeparateCompositeProgram(bool separate) { this->SeparateCompositeProgram = separate; }
+  /// that draws it (vtkRefractionPass::SetCompositeProgram). A composite program of its own
+  /// holds the composite's code alone (RF_COMPOSITE_ONLY), so a change rebuilds the program.
+  void SetSeparateCompositeProgram(bool separate)
+  {
+    if (separate != this->SeparateCompositeProgram)
+    {
+      this->SeparateCompositeProgram = separate;
+      this->DefinesTime.Modified();
+    }
+  }
   /// The glass meshes' surface model (solid or thin sheet, per connected piece).
   vtkRefractionSurfaceModel* GetSurfaceModel() { return this->SurfaceModel; }
 

@@ -7,6 +7,8 @@
 // selects), so switching stages costs no shader rebuild; only the composite (stage 5) is
 // compiled in just for frames that draw it (RF_SAMPLE_COMPOSITE): llvmpipe runs both sides of
 // a branch under a mask, and the composite's fetches took half or more of each G-buffer draw.
+// Where the composite has a program of its own (RF_COMPOSITE_ONLY) the G-buffer's code is left
+// out of it, for the same reason.
 //  1 front: octahedral view-space normal facing the viewer, -z_view, material index + 1 (a
 //    cleared texel, 0, is no glass); with RF_GBUFFER_COLOUR (output 1) the data's
 //    colour VTK computed (the actor's, or the scalars through the lookup table; alpha: how much
@@ -94,11 +96,10 @@ uniform float rfModelScale;
 
 #ifdef RF_SAMPLE_COMPOSITE
 // STAGE 5: FRONT_SURFACE (for the material at each pixel) and GLASS_COLOR (the shaded glass,
-// at the pixels or, rfCompositeCorners, at their lower-left corners as rfShadeFS.glsl writes
-// it with RF_CORNER_SAMPLES).
+// at the pixels or, with RF_COMPOSITE_CORNERS, at their lower-left corners as rfShadeFS.glsl
+// writes it with RF_CORNER_SAMPLES).
 uniform sampler2D rfCompositeSurface;
 uniform sampler2D rfCompositeColour;
-uniform int rfCompositeCorners;
 #endif
 
 //RF::Common
@@ -108,15 +109,15 @@ uniform int rfCompositeCorners;
 // corners that lie on the glass; alpha 0 where it has none.
 vec4 rfCompositeAt(ivec2 p, ivec2 last)
 {
-  if (rfCompositeCorners == 0)
-  {
-    return vec4(texelFetch(rfCompositeColour, p, 0).rgb, 1.0);
-  }
+#ifdef RF_COMPOSITE_CORNERS
   vec4 sum = texelFetch(rfCompositeColour, p, 0) +
     texelFetch(rfCompositeColour, min(p + ivec2(1, 0), last), 0) +
     texelFetch(rfCompositeColour, min(p + ivec2(0, 1), last), 0) +
     texelFetch(rfCompositeColour, min(p + ivec2(1, 1), last), 0);
   return sum.a > 0.5 ? vec4(sum.rgb / sum.a, 1.0) : vec4(0.0);
+#else
+  return vec4(texelFetch(rfCompositeColour, p, 0).rgb, 1.0);
+#endif
 }
 
 // The colour of a fragment of the glass of this material: its pixel's where the pixel was
@@ -142,7 +143,11 @@ vec4 rfSampleComposite(float material)
   }
   // The pixel's centre in the glass colour's texels: with corners, texel (i, j) is the lower-left
   // corner of pixel (i, j), so the centre lies on texel boundaries one further on.
-  vec2 centre = (vec2(pixel) + (rfCompositeCorners == 0 ? 0.5 : 1.0)) / rfViewport.zw;
+#ifdef RF_COMPOSITE_CORNERS
+  vec2 centre = (vec2(pixel) + 1.0) / rfViewport.zw;
+#else
+  vec2 centre = (vec2(pixel) + 0.5) / rfViewport.zw;
+#endif
   vec4 near = textureLod(rfCompositeColour, centre, 1.0);
   vec4 wider = textureLod(rfCompositeColour, centre, 2.0);
   vec4 sum = near.a > 1e-3 ? near : wider;
@@ -284,8 +289,11 @@ vec3 rfReconstructPositionVC()
     }
     gl_FragData[0] = rfComposite;
   }
+#ifndef RF_COMPOSITE_ONLY
   else
 #endif
+#endif
+#ifndef RF_COMPOSITE_ONLY
   {
     vec4 rfDataColour = gl_FragData[0]; // RF_DATA_COLOUR, as VTK's colour code left it
     vec3 rfP = RF_POSITION_VC;
@@ -374,3 +382,4 @@ vec3 rfReconstructPositionVC()
 #endif
     }
   }
+#endif

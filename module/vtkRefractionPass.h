@@ -508,8 +508,9 @@ public:
    * How the silhouette's draw at the window's samples (MultiSampleSilhouette) shares the
    * glass mappers' program with the G-buffer draws of the same frame. SHARED: one program holds
    * both, a uniform picks the stage. SEPARATE: the composite's code is in the program only
-   * for its own draw; VTK's mapper rebuilds its shader source at each of the two switches a
-   * frame (its shader cache keeps both compiled programs). Same pictures. AUTO (default):
+   * for its own draw, and that draw's program holds nothing else (no G-buffer code); VTK's
+   * mapper rebuilds its shader source at each of the two switches a frame (its shader cache
+   * keeps both compiled programs). Same pictures. AUTO (default):
    * SEPARATE on software rasterizers (llvmpipe, softpipe, SWR), which run the code of both
    * sides of a branch in every fragment, SHARED elsewhere. Measured on llvmpipe, 2 cores, a
    * 4-sample window at 512x512 (docs/benchmark.md): SEPARATE took DIR's frame from 1.74 to

@@ -307,6 +307,22 @@ int vtkRefractionGlassChecker::CheckGlassProp(vtkProp* prop)
                                      "actor.");
     check.Verdict = GLASS_AS_ORDINARY;
   }
+  else if (verts > 0 || lines > 0)
+  {
+    // VTK 9.1's mapper draws a prop's vertices and lines in the pass's glass stages as it
+    // draws its polygons, and no stage can tell their fragments apart: each line leaves a
+    // one-pixel copy of the surface it lies on (or a sliver of glass where it runs inside), which
+    // PEEL takes for two more interfaces. vtkCleanPolyData makes such lines of the triangles a
+    // merge flattens (the benchmark's torus had 572 along its seam: a bright column in PEEL's
+    // picture).
+    vtkWarningMacro("Glass prop " << name << " has " << verts << " vertices and " << lines
+                                  << " lines besides its " << surfaces
+                                  << " polygons: they are drawn into the glass as surfaces "
+                                     "(a sliver of glass along each line, which PEEL refracts "
+                                     "through). Draw them with an ordinary actor, or drop them "
+                                     "(vtkCleanPolyData: ConvertPolysToLinesOff, "
+                                     "ConvertLinesToPointsOff).");
+  }
   return check.Verdict;
 }
 

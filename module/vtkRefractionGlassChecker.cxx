@@ -310,7 +310,7 @@ int vtkRefractionGlassChecker::CheckGlassProp(vtkProp* prop)
   else if (verts > 0 || lines > 0)
   {
     // VTK 9.1's mapper draws a prop's vertices and lines in the pass's glass stages as it
-    // draws its polygons, and no stage can tell their fragments apart: each line leaves a
+    // draws its polygons, and the stages do not tell their fragments apart: each line leaves a
     // one-pixel copy of the surface it lies on (or a sliver of glass where it runs inside), which
     // PEEL takes for two more interfaces. vtkCleanPolyData makes such lines of the triangles a
     // merge flattens (the benchmark's torus had 572 along its seam: a bright column in PEEL's

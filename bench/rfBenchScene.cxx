@@ -59,11 +59,11 @@ vtkSmartPointer<vtkAlgorithm> MakeMesh(const std::string& name, const Options& o
     // some triangles over, and the pass (rightly) draws a mesh wound inconsistently without
     // face culling. Merging the seam first, as one would for any analysis, gives a closed,
     // consistently wound torus. The merge leaves the seam's triangles with two corners on one
-    // point, which vtkCleanPolyData by default keeps as 572 line cells; the pass draws a glass
-    // prop's lines into its layers as it draws its surfaces (a one-pixel copy of the surface
+    // point, which vtkCleanPolyData by default keeps as 572 line cells; the pass drew a glass
+    // prop's lines into its layers as it drew its surfaces (a one-pixel copy of the surface
     // beneath), and PEEL took them for two more interfaces: a bright column down the middle of
-    // the torus, 98 % of what PEEL 4 read worse than PEEL 2 there. The reference traces
-    // triangles only. So the degenerate cells are dropped, not converted.
+    // the torus, 98 % of what PEEL 4 read worse than PEEL 2 there. The pass now leaves them
+    // out, with a warning; the mesh drops them, as the reference, which traces triangles only.
     auto clean = vtkSmartPointer<vtkCleanPolyData>::New();
     clean->SetInputConnection(fn->GetOutputPort());
     clean->SetTolerance(1e-6);

@@ -637,7 +637,9 @@ bool vtkRefractionGeometryStage::ReplaceGlassShaderValues(std::string& fragmentS
           << (fragmentShader.find("float emix") != std::string::npos ? "emix" : "0.0")
           << "\n#define RF_POSITION_VC "
           << (haveVertexVC ? "vertexVC.xyz" : "rfReconstructPositionVC()") << "\n"
-          << "#define RF_NORMAL_VC " << (haveNormal ? "normalVCVSOutput" : "vec3(0.0)") << "\n";
+          << "#define RF_NORMAL_VC " << (haveNormal ? "normalVCVSOutput" : "vec3(0.0)") << "\n"
+          // A position rebuilt from gl_FragCoord spans two directions on a line's pixels too.
+          << (haveVertexVC ? "#define RF_SURFACES_ONLY\n" : "");
   if (fragmentShader.find(kDecTag) == std::string::npos ||
     fragmentShader.find(kImplTag) == std::string::npos)
   {
@@ -701,6 +703,13 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
   if (program->IsUniformUsed("rfParallel"))
   {
     program->SetUniformi("rfParallel", this->Parallel ? 1 : 0);
+  }
+  if (program->IsUniformUsed("rfSurfacesOnly"))
+  {
+    // With the wireframe or points representation the lines or points are the glass.
+    vtkActor* actor = vtkActor::SafeDownCast(prop);
+    const bool surface = !actor || actor->GetProperty()->GetRepresentation() == VTK_SURFACE;
+    program->SetUniformi("rfSurfacesOnly", surface ? 1 : 0);
   }
   if (program->IsUniformUsed("rfDCVC"))
   {

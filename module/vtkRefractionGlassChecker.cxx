@@ -309,17 +309,15 @@ int vtkRefractionGlassChecker::CheckGlassProp(vtkProp* prop)
   }
   else if (verts > 0 || lines > 0)
   {
-    // VTK 9.1's mapper draws a prop's vertices and lines in the pass's glass stages as it
-    // draws its polygons, and the stages do not tell their fragments apart: each line leaves a
-    // one-pixel copy of the surface it lies on (or a sliver of glass where it runs inside), which
-    // PEEL takes for two more interfaces. vtkCleanPolyData makes such lines of the triangles a
-    // merge flattens (the benchmark's torus had 572 along its seam: a bright column in PEEL's
-    // picture).
+    // VTK 9.1's mapper draws a prop's vertices and lines with its polygons, through the glass
+    // program, which leaves their fragments out (rfGeometryFS.glsl, RF_SURFACES_ONLY): drawn
+    // into the glass, a line left a copy of the surface under it, which PEEL refracted through
+    // (the benchmark's torus, whose seam vtkCleanPolyData had made into 572 lines). Said, since
+    // they are not drawn at all.
     vtkWarningMacro("Glass prop " << name << " has " << verts << " vertices and " << lines
                                   << " lines besides its " << surfaces
-                                  << " polygons: they are drawn into the glass as surfaces "
-                                     "(a sliver of glass along each line, which PEEL refracts "
-                                     "through). Draw them with an ordinary actor, or drop them "
+                                  << " polygons: glass is its surfaces, so they are not drawn. "
+                                     "Draw them with an ordinary actor, or drop them "
                                      "(vtkCleanPolyData: ConvertPolysToLinesOff, "
                                      "ConvertLinesToPointsOff).");
   }

@@ -6,8 +6,8 @@
  * is drawn as an ordinary actor; one with an empty vtkPolyData, NaN/infinite points (or
  * beyond float range), cells naming missing points, offsets beyond the connectivity, or cells
  * too small for their kind (polygons and strips under 3 points, lines under 2, empty
- * vertices) is not drawn. One with vertices or lines besides its polygons is drawn, with a
- * warning: they are drawn into the glass as surfaces. Each verdict is reported once, with the
+ * vertices) is not drawn. One with vertices or lines besides its polygons is drawn without
+ * them, with a warning (glass is its surfaces). Each verdict is reported once, with the
  * prop and the value, and kept until the prop's index or data change, so a static scene scans
  * no points and repeats no message.
  */

@@ -37,6 +37,10 @@
 // Defined by the stage: RF_POSITION_VC and RF_NORMAL_VC (the mapper's view-space position and
 // normal, or what stands in for them).
 uniform int rfGeometryStage;
+#ifdef RF_SURFACES_ONLY
+// 1 where the actor draws its surfaces (VTK_SURFACE): its vertex and line cells are left out.
+uniform int rfSurfacesOnly;
+#endif
 uniform int rfWindingSign;
 uniform float rfMaterial;
 uniform int rfParallel;
@@ -279,6 +283,24 @@ vec3 rfReconstructPositionVC()
 }
 
 //RF::Impl
+#ifdef RF_SURFACES_ONLY
+  // VTK's mapper draws a polydata's vertex and line cells with its polygons, through this
+  // program. Glass is its surfaces: a line drawn into it left a one-pixel copy of the surface
+  // it lies on (or a sliver of glass inside), which PEEL took for two more interfaces (the
+  // benchmark's torus: docs/benchmark.md, *The torus's seam*). A point's or a line's fragments
+  // move along one direction at most (the rasterizer interpolates along the line), a polygon's
+  // span two; 1e-3 of the sine between them leaves out polygons seen within 0.03 degrees of
+  // edge-on only. Outside any branch: derivatives.
+  {
+    vec3 rfAcross = dFdx(RF_POSITION_VC);
+    vec3 rfDown = dFdy(RF_POSITION_VC);
+    if (rfSurfacesOnly == 1 &&
+      length(cross(rfAcross, rfDown)) <= 1e-3 * length(rfAcross) * length(rfDown))
+    {
+      discard;
+    }
+  }
+#endif
 #ifdef RF_SAMPLE_COMPOSITE
   if (rfGeometryStage == 5)
   {

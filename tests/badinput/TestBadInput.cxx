@@ -514,17 +514,24 @@ int ShaderDoesNotBuildAfter(MessageLog* log, const std::string&)
   return ShaderDoesNotBuild(log, false);
 }
 
-// A glass sphere whose polydata also holds a line and a vertex (cells of mixed types) and
-// degenerate triangles (repeated points): a valid mesh, drawn without an error, a GL error or
-// a non-finite pixel over three frames, with one warning that its line and vertex are drawn
-// into the glass as surfaces (vtkRefractionGlassChecker).
+// A glass sphere whose polydata also holds a line (across its inside) and a vertex (cells of
+// mixed types) and degenerate triangles (repeated points): drawn without an error, a GL error
+// or a non-finite pixel over three frames, with one warning that its line and vertex are not
+// drawn, and, through PEEL (which would take the line for two more interfaces), as the
+// sphere's polygons alone are.
 int MixedCells(MessageLog* log, const std::string&)
 {
   auto poly = Sphere(-1.2, 0.7);
   auto mixed = vtkSmartPointer<vtkPolyData>::New();
   mixed->DeepCopy(poly);
   vtkNew<vtkCellArray> lines;
-  const vtkIdType line[2] = { 0, poly->GetNumberOfPoints() - 1 };
+  vtkIdType line[2] = { 0, 0 }; // the leftmost and the rightmost point: across the view
+  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i)
+  {
+    const double x = poly->GetPoint(i)[0];
+    line[0] = x < poly->GetPoint(line[0])[0] ? i : line[0];
+    line[1] = x > poly->GetPoint(line[1])[0] ? i : line[1];
+  }
   lines->InsertNextCell(2, line);
   mixed->SetLines(lines);
   vtkNew<vtkCellArray> verts;
@@ -535,7 +542,17 @@ int MixedCells(MessageLog* log, const std::string&)
   mixed->GetPolys()->InsertNextCell(3, degenerate);
   const vtkIdType collinear[3] = { 9, 9, 9 };
   mixed->GetPolys()->InsertNextCell(3, collinear);
+  Frame polygons;
+  {
+    Rig rig(kSize, kSize);
+    rig.Glass->SetMethod(vtkRefractionPass::PEEL);
+    AddRest(rig);
+    rig.Renderer->AddActor(GlassActor(poly, 1.5));
+    Look(rig);
+    polygons = rig.Render();
+  }
   Rig rig(kSize, kSize);
+  rig.Glass->SetMethod(vtkRefractionPass::PEEL);
   AddRest(rig);
   auto subject = GlassActor(mixed, 1.5);
   rig.Renderer->AddActor(subject);
@@ -550,13 +567,16 @@ int MixedCells(MessageLog* log, const std::string&)
   const int errors = log->Count("error");
   const int warnings = log->Count("warning");
   const int named = log->Count("warning",
-    { subject->GetClassName(), Address(subject.Get()), "1 vertices and 1 lines", "as surfaces" });
+    { subject->GetClassName(), Address(subject.Get()), "1 vertices and 1 lines", "not drawn" });
   std::printf("mixed_cells: %d errors, %d warnings, %d naming the actor and its cells\n", errors,
     warnings, named);
   RF_REQUIRE(errors == 0, "errors for a valid mesh of mixed cells (%d)", errors);
   RF_REQUIRE(warnings == 1 && named == 1,
     "expected one warning naming the actor, its vertex and its line (%d warnings, %d named)",
     warnings, named);
+  const double difference = ColourDifference(f, polygons);
+  std::printf("largest colour difference to the polygons alone: %g\n", difference);
+  RF_REQUIRE(difference <= 1e-5, "the line or the vertex changed the glass");
   return EXIT_SUCCESS;
 }
 

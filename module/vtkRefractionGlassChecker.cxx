@@ -312,8 +312,8 @@ int vtkRefractionGlassChecker::CheckGlassProp(vtkProp* prop)
     // VTK 9.1's mapper draws a prop's vertices and lines with its polygons, through the glass
     // program, which leaves their fragments out (rfGeometryFS.glsl, RF_SURFACES_ONLY): drawn
     // into the glass, a line left a copy of the surface under it, which PEEL refracted through
-    // (the benchmark's torus, whose seam vtkCleanPolyData had made into 572 lines). Said, since
-    // they are not drawn at all.
+    // (the benchmark's torus, whose seam vtkCleanPolyData had made into 572 lines). Said, as
+    // they are then drawn nowhere.
     vtkWarningMacro("Glass prop " << name << " has " << verts << " vertices and " << lines
                                   << " lines besides its " << surfaces
                                   << " polygons: glass is its surfaces, so they are not drawn. "

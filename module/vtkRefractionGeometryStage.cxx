@@ -707,9 +707,7 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
   if (program->IsUniformUsed("rfSurfacesOnly"))
   {
     // With the wireframe or points representation the lines or points are the glass.
-    vtkActor* actor = vtkActor::SafeDownCast(prop);
-    const bool surface = !actor || actor->GetProperty()->GetRepresentation() == VTK_SURFACE;
-    program->SetUniformi("rfSurfacesOnly", surface ? 1 : 0);
+    program->SetUniformi("rfSurfacesOnly", vtkRefractionMeshes::DrawsSurfaces(prop) ? 1 : 0);
   }
   if (program->IsUniformUsed("rfDCVC"))
   {

@@ -307,13 +307,14 @@ int vtkRefractionGlassChecker::CheckGlassProp(vtkProp* prop)
                                      "actor.");
     check.Verdict = GLASS_AS_ORDINARY;
   }
-  else if (verts > 0 || lines > 0)
+  else if ((verts > 0 || lines > 0) && vtkRefractionMeshes::DrawsSurfaces(prop))
   {
     // VTK 9.1's mapper draws a prop's vertices and lines with its polygons, through the glass
     // program, which leaves their fragments out (rfGeometryFS.glsl, RF_SURFACES_ONLY): drawn
     // into the glass, a line left a copy of the surface under it, which PEEL refracted through
     // (the benchmark's torus, whose seam vtkCleanPolyData had made into 572 lines). Said, as
-    // they are then drawn nowhere.
+    // they are then drawn nowhere. With the wireframe or points representation they are glass
+    // as the polygons' edges or points are: nothing to say.
     vtkWarningMacro("Glass prop " << name << " has " << verts << " vertices and " << lines
                                   << " lines besides its " << surfaces
                                   << " polygons: glass is its surfaces, so they are not drawn. "

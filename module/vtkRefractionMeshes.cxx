@@ -8,6 +8,7 @@
 #include "vtkMapper.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
+#include "vtkProperty.h"
 #include "vtkSmartPointer.h"
 
 #include <string>
@@ -32,6 +33,13 @@ bool vtkRefractionMeshes::IsComposite(vtkProp* prop)
 {
   vtkMapper* mapper = GetMapper(prop);
   return mapper && vtkCompositeDataSet::SafeDownCast(mapper->GetInputDataObject(0, 0));
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionMeshes::DrawsSurfaces(vtkProp* prop)
+{
+  vtkActor* actor = vtkActor::SafeDownCast(prop);
+  return !actor || actor->GetProperty()->GetRepresentation() == VTK_SURFACE;
 }
 
 //------------------------------------------------------------------------------

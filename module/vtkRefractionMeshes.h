@@ -41,6 +41,10 @@ public:
   /// Whether the prop's mapper draws a vtkCompositeDataSet.
   static bool IsComposite(vtkProp* prop);
 
+  /// Whether the prop draws its polygons as surfaces (not an actor's wireframe or points
+  /// representation): then its vertex and line cells are no part of the glass.
+  static bool DrawsSurfaces(vtkProp* prop);
+
   /**
    * The polydata the prop's mapper draws, as it last produced them (no pipeline update).
    * Empty leaves are kept when `withEmpty` is set (the validation reports them).

@@ -14,8 +14,12 @@ float rfEnvironmentWidth = 0.0;
 // The long axis of that footprint: how far the direction turns across the pixel along the
 // axis its rays spread most (0: rfEnvironmentWidth every way). Set with rfEnvironmentWidth.
 vec3 rfEnvironmentAxis = vec3(0.0);
+// How far the direction turns across the pixel along the other axis (the footprint's second
+// span; rfEnvironmentWidth is its length). Set with rfEnvironmentWidth.
+vec3 rfEnvironmentShortAxis = vec3(0.0);
 
-// One lookup, averaged over rfEnvironmentWidth.
+// One lookup, averaged over rfEnvironmentWidth; the built-in environment over the whole
+// footprint (rfEnvironmentAxis and rfEnvironmentShortAxis), which it filters in closed form.
 vec3 rfEnvironmentLookup(vec3 directionVC)
 {
 #if defined(RF_ENV_CUBEMAP)
@@ -30,7 +34,8 @@ vec3 rfEnvironmentLookup(vec3 directionVC)
     : (directionVC.y >= 0.0 ? 1.0 : 0.0);
   return mix(rfBackground, rfBackground2, clamp(up, 0.0, 1.0));
 #else
-  return rfk_builtin_environment_filtered(rfViewToWorld * directionVC, rfEnvironmentWidth);
+  return rfk_builtin_environment_footprint(rfViewToWorld * directionVC,
+    rfViewToWorld * rfEnvironmentAxis, rfViewToWorld * rfEnvironmentShortAxis);
 #endif
 }
 
@@ -40,28 +45,35 @@ vec3 rfEnvironmentLookup(vec3 directionVC)
 
 // The environment over the footprint of a pixel's rays around directionVC: where the
 // directions spread along one axis (rfEnvironmentAxis) more than 1.5 times across it, the mean
-// of lookups spaced along that axis, each as wide as the spacing (at least rfEnvironmentWidth),
-// as a GPU's anisotropic filtering does; else one lookup rfEnvironmentWidth wide. Both are the
-// one loop (one pass for the single lookup): as an early return before the loop, the single
-// lookup cost llvmpipe a lookup more at every pixel (it runs both paths, and the loop at least
-// once), 3-10 ms of a 1024 px full-window sphere's shading with the built-in environment. A single
-// lookup as wide as the long axis would blur across what the rays resolve, one as wide as the
-// short axis aliases along the long one (speckle in the rings inside the torus's
-// hole and along its rims).
+// of lookups spaced along that axis, each standing for its share of the axis, as a GPU's
+// anisotropic filtering does; else one lookup over the whole footprint. A cube map's lookup is
+// a cone as wide as the share (at least rfEnvironmentWidth); the built-in environment's is the
+// parallelogram of the share and the short axis, filtered in closed form, so it does not blur
+// across the long axis what the rays resolve there (the sharp tile edge down the middle of the
+// benchmark's torus, 3-5 pixels wide with cones; docs/benchmark.md, *The built-in environment
+// over the footprint*). Both are the one loop (one pass for the single lookup): as an early
+// return before the loop, the single lookup cost llvmpipe a lookup more at every pixel (it runs
+// both paths, and the loop at least once), 3-10 ms of a 1024 px full-window sphere's shading
+// with the built-in environment. A single lookup as wide as the long axis would blur across
+// what the rays resolve, one as wide as the short axis aliases along the long one (speckle in
+// the rings inside the torus's hole and along its rims).
 vec3 rfEnvironment(vec3 directionVC)
 {
   float width = rfEnvironmentWidth;
-  float span = length(rfEnvironmentAxis);
+  vec3 longAxis = rfEnvironmentAxis;
+  float span = length(longAxis);
   float taps = min(ceil(span / max(width, 1e-6)), float(RF_MAX_ENVIRONMENT_TAPS));
   bool spread = span > 1.5 * width && taps >= 2.0;
   taps = spread ? taps : 1.0;
-  vec3 axis = spread ? rfEnvironmentAxis : vec3(0.0);
+  vec3 axis = spread ? longAxis : vec3(0.0);
   rfEnvironmentWidth = spread ? max(width, span / taps) : width;
+  rfEnvironmentAxis = longAxis / taps;
   vec3 sum = vec3(0.0);
   for (float i = 0.5; i < taps; i += 1.0)
   {
     sum += rfEnvironmentLookup(directionVC + (i / taps - 0.5) * axis);
   }
   rfEnvironmentWidth = width;
+  rfEnvironmentAxis = longAxis;
   return sum / taps;
 }

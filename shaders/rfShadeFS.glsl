@@ -438,18 +438,82 @@ rfRay rfTraceRay(vec2 tc, vec3 N1, float depth, int material, int channel)
   return ray;
 }
 
+// The largest angle (radians) a lookup is averaged over: across a discontinuity of the rays
+// (a TIR boundary, a jump of the exit) the difference of two neighbours is no spread.
+#define RF_MAX_LOOKUP_WIDTH 0.5
+
+// The share of a pixel's spread a lookup is averaged over: all of it at the pixels' centres;
+// half at their corners (RF_CORNER_SAMPLES), whose four samples the composite averages
+// already, one pixel apart, and at the rays of the 2x2 blocks (RF_COARSE_SAMPLES), two pixels
+// apart, each standing for its own pixel.
+#if defined(RF_CORNER_SAMPLES) || defined(RF_COARSE_SAMPLES)
+#define RF_LOOKUP_WIDTH_SCALE 0.5
+#else
+#define RF_LOOKUP_WIDTH_SCALE 1.0
+#endif
+
+// How far a unit direction turns across the pixel, from the screen-space derivatives over the
+// 2x2 block: along the screen axis it turns most (longAxis, rfEnvironmentAxis) and along the
+// other (shortAxis, whose length is the width each lookup of a cube map is averaged over,
+// rfEnvironmentWidth); the two span the parallelogram of directions the pixel's rays cover.
+struct rfFootprint
+{
+  vec3 longAxis;
+  vec3 shortAxis;
+};
+
+// The footprint of a direction's rays across the pixel. One width for both axes read worse:
+// against the supersampled reference on the benchmark's sphere and torus the smaller of the
+// two gained 1.4 and 2.2 dB, the larger 0.7 and -0.6 (it blurs across what the rays resolve);
+// lookups spread along the long axis at the smaller width gained another 0.9-1.0 dB on the
+// torus (docs/benchmark.md, *Lookups along the footprint's long axis*). A neighbour without
+// glass (no direction: glass 0) does not count. Every pixel of the block must run it
+// (derivatives), so it is called outside any branch that depends on the pixel. None (zero
+// spans) without RF_FILTERED_LOOKUPS.
+rfFootprint rfFootprintAcrossPixel(vec3 direction, float glass)
+{
+  rfFootprint footprint;
+  footprint.longAxis = vec3(0.0);
+  footprint.shortAxis = vec3(0.0);
+#ifdef RF_FILTERED_LOOKUPS
+  vec3 across = dFdx(glass) == 0.0 ? dFdx(direction) : vec3(0.0);
+  vec3 down = dFdy(glass) == 0.0 ? dFdy(direction) : vec3(0.0);
+  bool acrossLonger = length(across) > length(down);
+  vec3 longAxis = RF_LOOKUP_WIDTH_SCALE * (acrossLonger ? across : down);
+  vec3 shortAxis = RF_LOOKUP_WIDTH_SCALE * (acrossLonger ? down : across);
+  float span = length(longAxis);
+  float width = length(shortAxis);
+  if (span >= 0.0 && width >= 0.0) // NaN: none
+  {
+    footprint.longAxis = span > RF_MAX_LOOKUP_WIDTH ? longAxis * (RF_MAX_LOOKUP_WIDTH / span)
+                                                    : longAxis;
+    footprint.shortAxis = width > RF_MAX_LOOKUP_WIDTH
+      ? shortAxis * (RF_MAX_LOOKUP_WIDTH / width)
+      : shortAxis;
+  }
+#endif
+  return footprint;
+}
+
+// The next lookups of the environment over this footprint (rfEnvironment.glsl).
+void rfLookUpOver(rfFootprint footprint)
+{
+  rfEnvironmentAxis = footprint.longAxis;
+  rfEnvironmentShortAxis = footprint.shortAxis;
+  rfEnvironmentWidth = length(footprint.shortAxis);
+}
+
 // The ray's colour: the environment (or the scene) along its reflected and its transmitted
 // directions, each lookup averaged over the footprint its directions cover across the pixel
 // (rfFootprintAcrossPixel), mixed by Fresnel, tinted along the path inside.
-vec3 rfRayColour(rfRay ray, vec4 reflectedFootprint, vec4 transmittedFootprint)
+vec3 rfRayColour(rfRay ray, rfFootprint reflectedFootprint, rfFootprint transmittedFootprint)
 {
 #ifdef RF_FRESNEL
   float F = rfFresnelWeight(-dot(ray.V, ray.N1), ray.etaIn);
 #else
   float F = 0.0;
 #endif
-  rfEnvironmentWidth = transmittedFootprint.w;
-  rfEnvironmentAxis = transmittedFootprint.xyz;
+  rfLookUpOver(transmittedFootprint);
   vec3 transmitted = rfTransmittedColour(ray.tc, ray.N1, ray.T1, ray.P2, ray.T2);
 #if defined(RF_METHOD_PEEL) || defined(RF_EXIT_REFLECTION)
   if (ray.branchWeight > 0.0)
@@ -473,55 +537,13 @@ vec3 rfRayColour(rfRay ray, vec4 reflectedFootprint, vec4 transmittedFootprint)
   // one too it gained 0.1 dB on the torus for a third of the shading's time the long axis adds.
   // rfEnvironmentLookup, not rfEnvironment with no axis: the same lookup without the
   // footprint's loop, which llvmpipe runs at least once for every pixel.
-  rfEnvironmentWidth = reflectedFootprint.w;
+  rfLookUpOver(reflectedFootprint);
   vec3 colour = F * rfEnvironmentLookup(reflect(ray.V, ray.N1)) + (1.0 - F) * transmitted;
 #ifdef RF_HIGHLIGHTS
   colour += rfHighlight(ray.P1, ray.V, ray.N1, ray.material,
     rfFresnelWeight(-dot(ray.V, ray.N1), ray.etaIn));
 #endif
   return colour;
-}
-
-// The largest angle (radians) a lookup is averaged over: across a discontinuity of the rays
-// (a TIR boundary, a jump of the exit) the difference of two neighbours is no spread.
-#define RF_MAX_LOOKUP_WIDTH 0.5
-
-// The share of a pixel's spread a lookup is averaged over: all of it at the pixels' centres;
-// half at their corners (RF_CORNER_SAMPLES), whose four samples the composite averages
-// already, one pixel apart, and at the rays of the 2x2 blocks (RF_COARSE_SAMPLES), two pixels
-// apart, each standing for its own pixel.
-#if defined(RF_CORNER_SAMPLES) || defined(RF_COARSE_SAMPLES)
-#define RF_LOOKUP_WIDTH_SCALE 0.5
-#else
-#define RF_LOOKUP_WIDTH_SCALE 1.0
-#endif
-
-// How far a unit direction turns across the pixel, from the screen-space derivatives over the
-// 2x2 block: xyz the turn along the axis it turns most (the long axis of the pixel's
-// footprint, rfEnvironmentAxis), w the turn along the other (the width each lookup is averaged
-// over, rfEnvironmentWidth). One width for both axes read worse: against the supersampled
-// reference on the benchmark's sphere and torus the smaller of the two gained 1.4 and 2.2 dB,
-// the larger 0.7 and -0.6 (it blurs across what the rays resolve); lookups spread along the
-// long axis at the smaller width gained another 0.9-1.0 dB on the torus (docs/benchmark.md,
-// *Lookups along the footprint's long axis*). A neighbour without glass (no direction: glass
-// 0) does not count. Every pixel of the block must run it (derivatives), so it is called
-// outside any branch that depends on the pixel. 0 without RF_FILTERED_LOOKUPS.
-vec4 rfFootprintAcrossPixel(vec3 direction, float glass)
-{
-#ifdef RF_FILTERED_LOOKUPS
-  vec3 across = dFdx(glass) == 0.0 ? dFdx(direction) : vec3(0.0);
-  vec3 down = dFdy(glass) == 0.0 ? dFdy(direction) : vec3(0.0);
-  float acrossTurn = length(across);
-  float downTurn = length(down);
-  float width = RF_LOOKUP_WIDTH_SCALE * min(acrossTurn, downTurn);
-  vec3 axis = RF_LOOKUP_WIDTH_SCALE * (acrossTurn > downTurn ? across : down);
-  float span = length(axis);
-  axis = span > RF_MAX_LOOKUP_WIDTH ? axis * (RF_MAX_LOOKUP_WIDTH / span) : axis;
-  return width >= 0.0 && span >= 0.0 ? vec4(axis, min(width, RF_MAX_LOOKUP_WIDTH))
-                                      : vec4(0.0); // NaN: none
-#else
-  return vec4(0.0);
-#endif
 }
 
 // The colour of the glass at one surface point (glass false: none there, black): the rays
@@ -549,11 +571,11 @@ vec3 rfShadeColour(bool glass, vec2 tc, vec3 N1, float depth, int material,
   reflectedInside = ray.reflectedInside;
   exitDirection = ray.T2;
   float defined = glass ? 1.0 : 0.0;
-  vec4 transmittedFootprint = rfFootprintAcrossPixel(ray.T2, defined);
-  vec4 reflectedFootprint = rfFootprintAcrossPixel(reflect(ray.V, ray.N1), defined);
+  rfFootprint transmittedFootprint = rfFootprintAcrossPixel(ray.T2, defined);
+  rfFootprint reflectedFootprint = rfFootprintAcrossPixel(reflect(ray.V, ray.N1), defined);
 #ifdef RF_DISPERSION
-  vec4 redFootprint = rfFootprintAcrossPixel(red.T2, defined);
-  vec4 blueFootprint = rfFootprintAcrossPixel(blue.T2, defined);
+  rfFootprint redFootprint = rfFootprintAcrossPixel(red.T2, defined);
+  rfFootprint blueFootprint = rfFootprintAcrossPixel(blue.T2, defined);
 #endif
   if (!glass)
   {

@@ -18,3 +18,14 @@ void rf_builtin_environment_filtered(
   rgb[1] = colour.y;
   rgb[2] = colour.z;
 }
+
+void rf_builtin_environment_footprint(const double direction_world[3],
+  const double span_a[3], const double span_b[3], double rgb[3])
+{
+  const rf_float3 colour = rfk_builtin_environment_footprint(
+    rf_make3(direction_world[0], direction_world[1], direction_world[2]),
+    rf_make3(span_a[0], span_a[1], span_a[2]), rf_make3(span_b[0], span_b[1], span_b[2]));
+  rgb[0] = colour.x;
+  rgb[1] = colour.y;
+  rgb[2] = colour.z;
+}

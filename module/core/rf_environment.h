@@ -17,6 +17,13 @@ void rf_builtin_environment(const double direction_world[3], double rgb[3]);
 void rf_builtin_environment_filtered(
   const double direction_world[3], double width, double rgb[3]);
 
+/* The same averaged over the parallelogram of directions spanned by span_a and span_b about
+ * the direction (how far the unit direction turns across a pixel along each of the screen's
+ * axes): a footprint long one way is not blurred the other. Zero spans: the one direction,
+ * exactly rf_builtin_environment; a span that is not finite counts as none. */
+void rf_builtin_environment_footprint(const double direction_world[3],
+  const double span_a[3], const double span_b[3], double rgb[3]);
+
 #ifdef __cplusplus
 }
 #endif

@@ -131,6 +131,111 @@ static void test_extreme_widths_are_finite(void)
   CHECK(finite);
 }
 
+/* The mean of the point values over the parallelogram spanned by a and b about d, n x n
+ * samples. */
+static void parallelogram_mean(rf_vec3 d, rf_vec3 a, rf_vec3 b, int n, double mean[3])
+{
+  int i;
+  int j;
+  mean[0] = mean[1] = mean[2] = 0.0;
+  for (j = 0; j < n; ++j)
+  {
+    for (i = 0; i < n; ++i)
+    {
+      const double s = (i + 0.5) / n - 0.5;
+      const double t = (j + 0.5) / n - 0.5;
+      const rf_vec3 x = rf_vec3_add(d, rf_vec3_add(rf_vec3_scale(a, s), rf_vec3_scale(b, t)));
+      const double dir[3] = { x.x, x.y, x.z };
+      double rgb[3];
+      rf_builtin_environment(dir, rgb);
+      mean[0] += rgb[0] / (n * n);
+      mean[1] += rgb[1] / (n * n);
+      mean[2] += rgb[2] / (n * n);
+    }
+  }
+}
+
+/* A footprint `ratio` times longer one way than the other, turned by a different angle about
+ * each of 3000 directions: the footprint's filter against the parallelogram's mean, beside
+ * one cone as wide as the short span (it aliases along the long one) and one as wide as the
+ * long span (it blurs across). Measured: long 0.04 rad, ratio 8: 0.0253 footprint, 0.0711
+ * short cone, 0.0601 long cone, 0.0931 point; long 0.1, ratio 4: 0.0451, 0.0874, 0.0851,
+ * 0.1460. */
+static void test_long_footprints(double longSpan, double ratio)
+{
+  const int count = 3000;
+  double footprint_error = 0.0;
+  double short_error = 0.0;
+  double long_error = 0.0;
+  double point_error = 0.0;
+  int i;
+  for (i = 0; i < count; ++i)
+  {
+    const rf_vec3 d = direction_at(i, count);
+    const rf_vec3 helper =
+      fabs(d.y) < 0.9 ? rf_vec3_make(0.0, 1.0, 0.0) : rf_vec3_make(1.0, 0.0, 0.0);
+    const rf_vec3 u = rf_vec3_normalize(rf_vec3_cross(d, helper));
+    const rf_vec3 v = rf_vec3_cross(u, d);
+    const double turn = 0.7 * i;
+    const rf_vec3 along = rf_vec3_add(rf_vec3_scale(u, cos(turn)), rf_vec3_scale(v, sin(turn)));
+    const rf_vec3 across = rf_vec3_add(rf_vec3_scale(u, -sin(turn)), rf_vec3_scale(v, cos(turn)));
+    const rf_vec3 a = rf_vec3_scale(along, longSpan);
+    const rf_vec3 b = rf_vec3_scale(across, longSpan / ratio);
+    const double dir[3] = { d.x, d.y, d.z };
+    const double span_a[3] = { a.x, a.y, a.z };
+    const double span_b[3] = { b.x, b.y, b.z };
+    double mean[3];
+    double rgb[3];
+    parallelogram_mean(d, a, b, 32, mean);
+    rf_builtin_environment_footprint(dir, span_a, span_b, rgb);
+    footprint_error += squared_distance(rgb, mean);
+    rf_builtin_environment_filtered(dir, longSpan / ratio, rgb);
+    short_error += squared_distance(rgb, mean);
+    rf_builtin_environment_filtered(dir, longSpan, rgb);
+    long_error += squared_distance(rgb, mean);
+    rf_builtin_environment(dir, rgb);
+    point_error += squared_distance(rgb, mean);
+  }
+  footprint_error = sqrt(footprint_error / count);
+  short_error = sqrt(short_error / count);
+  long_error = sqrt(long_error / count);
+  point_error = sqrt(point_error / count);
+  printf("footprint %.3g x %.3g rad: RMS distance to its mean %.4f footprint, %.4f short cone, "
+         "%.4f long cone, %.4f point\n",
+    longSpan, longSpan / ratio, footprint_error, short_error, long_error, point_error);
+  CHECK(footprint_error < 0.6 * short_error);
+  CHECK(footprint_error < 0.6 * long_error);
+  CHECK(footprint_error < 0.5 * point_error);
+}
+
+/* Zero spans are the point value exactly; the isotropic filter is the footprint of two spans
+ * as long as its width, up the meridian and along the horizon; spans that are not finite give
+ * a finite colour. */
+static void test_footprint_edges(void)
+{
+  const double zero[3] = { 0.0, 0.0, 0.0 };
+  const double bad[3] = { NAN, INFINITY, 0.0 };
+  int same = 1;
+  int finite = 1;
+  int i;
+  for (i = 0; i < 2000; ++i)
+  {
+    const rf_vec3 d = direction_at(i, 2000);
+    const double dir[3] = { d.x, d.y, d.z };
+    double point[3];
+    double rgb[3];
+    rf_builtin_environment(dir, point);
+    rf_builtin_environment_footprint(dir, zero, zero, rgb);
+    same = same && rgb[0] == point[0] && rgb[1] == point[1] && rgb[2] == point[2];
+    rf_builtin_environment_footprint(dir, bad, zero, rgb);
+    finite = finite && isfinite(rgb[0]) && isfinite(rgb[1]) && isfinite(rgb[2]);
+    rf_builtin_environment_footprint(dir, bad, bad, rgb);
+    finite = finite && isfinite(rgb[0]) && isfinite(rgb[1]) && isfinite(rgb[2]);
+  }
+  CHECK(same);
+  CHECK(finite);
+}
+
 int main(void)
 {
   test_width_zero_is_the_point_value();
@@ -138,5 +243,8 @@ int main(void)
   test_closer_to_the_footprint_mean(0.05);
   test_closer_to_the_footprint_mean(0.2);
   test_extreme_widths_are_finite();
+  test_long_footprints(0.04, 8.0);
+  test_long_footprints(0.1, 4.0);
+  test_footprint_edges();
   return RF_TEST_SUMMARY();
 }

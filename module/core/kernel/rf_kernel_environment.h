@@ -18,16 +18,37 @@ RF_KERNEL rf_float rfk_filtered_square_wave(rf_float x, rf_float width)
   return 2.0 * (a - b) / width;
 }
 
-/* The built-in environment averaged over a cone of directions `width` radians across (the
- * spread of a pixel's rays; 0: the one direction, exactly rfk_builtin_environment), so that
- * glass that magnifies or minifies it does not alias: each pattern is box-filtered at the
- * width it has in its own coordinates (the meridians in azimuth, the ring in height, the
- * tiles on the ground plane, where a cone of width w covers w / down^2 toward the horizon and
- * w / down across), the sun's lobe
- * widened as a Gaussian of the box's variance (w^2 / 12) with its energy kept. World space,
- * +y up; the direction need not be unit. A zero or non-finite direction gives the horizon
- * colour. Linear RGB, at most about 3 (the sun). */
-RF_KERNEL rf_float3 rfk_builtin_environment_filtered(rf_float3 directionWorld, rf_float width)
+/* A square wave of period 2 (+1 where floor(x) is even, -1 where odd) box-filtered over
+ * `width` (rfk_filtered_square_wave); a box narrower than a hundred-thousandth of a period
+ * (relative to x) is the point value, where the difference of the two ends would round away. */
+RF_KERNEL rf_float rfk_square_wave_over(rf_float x, rf_float width)
+{
+  rf_float point = 1.0 - 4.0 * rf_fract(rf_floor(x) * 0.5);
+  return width > 1e-5 * (1.0 + rf_abs(x)) ? rfk_filtered_square_wave(x, width) : point;
+}
+
+/* How far a pattern's coordinate moves over a footprint: the sum of its changes along the two
+ * spans (the extent of the parallelogram they span, in that coordinate), at most `cap`; NaN
+ * (a span that is not finite) gives 0, the point value. */
+RF_KERNEL rf_float rfk_footprint_extent(rf_float alongA, rf_float alongB, rf_float cap)
+{
+  rf_float extent = rf_abs(alongA) + rf_abs(alongB);
+  return extent >= 0.0 ? rf_min(extent, cap) : 0.0;
+}
+
+/* The built-in environment averaged over the footprint of a pixel's rays: the parallelogram of
+ * directions spanned by spanA and spanB about directionWorld (how far the unit direction turns
+ * across the pixel along each of the screen's axes; zero spans: the one direction, exactly
+ * rfk_builtin_environment), so that glass that magnifies or minifies the environment does not
+ * alias, and a footprint long one way is not blurred the other (across the torus's rims, where
+ * the rays spread along the rim and not across it). Each pattern is box-filtered in its own
+ * coordinate over the footprint's extent there (the meridians in azimuth, the ring in height,
+ * the tiles in the ground plane's u and v), the sun's lobe widened as a Gaussian of the box's
+ * variance (the spans' mean square / 12) with its energy kept. World space, +y up; the
+ * direction need not be unit, the spans are taken as turns of the unit direction. A zero or
+ * non-finite direction gives the horizon colour. Linear RGB, at most about 3 (the sun). */
+RF_KERNEL rf_float3 rfk_builtin_environment_footprint(
+  rf_float3 directionWorld, rf_float3 spanA, rf_float3 spanB)
 {
   const rf_float3 horizon = rf_make3(0.85, 0.88, 0.92);
   const rf_float3 zenith = rf_make3(0.15, 0.35, 0.75);
@@ -38,8 +59,8 @@ RF_KERNEL rf_float3 rfk_builtin_environment_filtered(rf_float3 directionWorld, r
   const rf_float meridianWidth = 0.04; /* in sectors of 30 degrees of azimuth */
   const rf_float ringWidth = 0.02;     /* in height, d.y */
   const rf_float sunSharpness = 400.0;
+  const rf_float cap = 1e4; /* any wider footprint is the patterns' mean already */
   rf_float len = rf_length3(directionWorld);
-  rf_float w = width > 0.0 ? width : 0.0;
   if (!(len > 0.0) || rf_isinf(len))
   {
     return horizon;
@@ -50,50 +71,67 @@ RF_KERNEL rf_float3 rfk_builtin_environment_filtered(rf_float3 directionWorld, r
     /* Sky: a gradient, twelve meridians and a ring at 30 degrees of elevation (so that the
      * bending of straight lines shows through glass), and a sun. A line of profile
      * 1 - smoothstep(0, a, distance) filtered by a box of width f spreads by f / 2 on each
-     * side, to a + f / 2, and dims by a / (a + f / 2): the same light over a wider band. */
+     * side, to a + f / 2, and dims by a / (a + f / 2): the same light over a wider band. The
+     * azimuth turns by (d.x e.z - d.z e.x) / (d.x^2 + d.z^2) for a turn e of the direction. */
     rf_float elevation = rf_sqrt(d.y);
-    rf_float cosElevation = rf_sqrt(rf_max(1.0 - d.y * d.y, 0.0));
+    rf_float horizontal = rf_max(d.x * d.x + d.z * d.z, 1e-6);
     rf_float azimuth = rf_atan2(d.z, d.x);
     rf_float sector = rf_fract(azimuth * (6.0 / 3.14159265358979));
-    rf_float sectorSpread = 0.5 * w * (6.0 / 3.14159265358979) / rf_max(cosElevation, 1e-3);
+    rf_float sectorSpread = 0.5 * (6.0 / 3.14159265358979) *
+      rfk_footprint_extent((d.x * spanA.z - d.z * spanA.x) / horizontal,
+        (d.x * spanB.z - d.z * spanB.x) / horizontal, cap);
     rf_float meridian = (1.0 -
                           rf_smoothstep(0.0, meridianWidth + sectorSpread,
                             rf_min(sector, 1.0 - sector))) *
       (meridianWidth / (meridianWidth + sectorSpread));
-    rf_float ringSpread = 0.5 * w * cosElevation;
+    rf_float ringSpread = 0.5 * rfk_footprint_extent(spanA.y, spanB.y, cap);
     rf_float ring = (1.0 - rf_smoothstep(0.0, ringWidth + ringSpread, rf_abs(d.y - 0.5))) *
       (ringWidth / (ringWidth + ringSpread));
-    rf_float sharpness =
-      w > 0.0 ? 1.0 / (1.0 / sunSharpness + w * w / 12.0) : sunSharpness;
+    rf_float variance =
+      rfk_footprint_extent(rf_dot3(spanA, spanA), rf_dot3(spanB, spanB), cap) / 24.0;
+    rf_float sharpness = variance > 0.0 ? 1.0 / (1.0 / sunSharpness + variance) : sunSharpness;
     rf_float sun = rf_pow(rf_max(rf_dot3(d, sunDirection), 0.0), sharpness) *
-      (w > 0.0 ? sharpness / sunSharpness : 1.0);
+      (variance > 0.0 ? sharpness / sunSharpness : 1.0);
     rf_float line = rf_max(meridian, ring) * 0.6;
     return rf_add3(rf_scale3(rf_mix3(horizon, zenith, elevation), 1.0 - line),
       rf_scale3(sunColour, sun));
   }
-  /* Ground: unit tiles on the plane y = -1, fading into the horizon where they would alias. */
+  /* Ground: unit tiles on the plane y = -1 (the point u = d.x / down, v = d.z / down), fading
+   * into the horizon where they would alias. A turn e of the direction moves the point by
+   * ((e.x + u e.y) / down, (e.z + v e.y) / down). Tiles of different parity: the product of the
+   * two filtered waves is -1 there; a footprint wider than a few tiles gives their mean. */
   rf_float down = -d.y;
-  rf_float u = d.x / rf_max(down, 1e-4);
-  rf_float v = d.z / rf_max(down, 1e-4);
-  rf_float checker = rf_fract((rf_floor(u) + rf_floor(v)) * 0.5) * 2.0;
-  if (w > 0.0)
-  {
-    /* The footprint's extent along u and along v: its radial and tangential extents
-     * projected (the hit point at distance rho = tan(angle from straight down) moves by
-     * w / down^2 radially and w / down across). Tiles of different parity: the product of the
-     * two filtered waves is -1 there. A footprint wider than a few tiles gives their mean; the
-     * cap keeps the division finite. */
-    rf_float radial = w / rf_max(down * down, 1e-8);
-    rf_float across = w / rf_max(down, 1e-8);
-    rf_float rho = rf_sqrt(u * u + v * v);
-    rf_float cu = rho > 0.0 ? rf_abs(u) / rho : 1.0;
-    rf_float cv = rho > 0.0 ? rf_abs(v) / rho : 0.0;
-    rf_float fu = rf_min(cu * radial + cv * across, 1e4);
-    rf_float fv = rf_min(cv * radial + cu * across, 1e4);
-    checker = 0.5 - 0.5 * rfk_filtered_square_wave(u, fu) * rfk_filtered_square_wave(v, fv);
-  }
+  rf_float safeDown = rf_max(down, 1e-4);
+  rf_float u = d.x / safeDown;
+  rf_float v = d.z / safeDown;
+  rf_float fu = rfk_footprint_extent(
+    (spanA.x + u * spanA.y) / safeDown, (spanB.x + u * spanB.y) / safeDown, cap);
+  rf_float fv = rfk_footprint_extent(
+    (spanA.z + v * spanA.y) / safeDown, (spanB.z + v * spanB.y) / safeDown, cap);
+  rf_float checker = 0.5 - 0.5 * rfk_square_wave_over(u, fu) * rfk_square_wave_over(v, fv);
   rf_float fade = rf_smoothstep(0.0, 0.35, down);
   return rf_mix3(horizon, rf_mix3(tileLight, tileDark, checker), fade);
+}
+
+/* The built-in environment averaged over a cone of directions `width` radians across (the
+ * spread of a pixel's rays; 0, negative or NaN: the one direction, exactly
+ * rfk_builtin_environment): the footprint of two spans `width` long, one up the meridian and
+ * one along the horizon (rfk_builtin_environment_footprint). */
+RF_KERNEL rf_float3 rfk_builtin_environment_filtered(rf_float3 directionWorld, rf_float width)
+{
+  rf_float w = width > 0.0 ? rf_min(width, 1e4) : 0.0;
+  rf_float len = rf_length3(directionWorld);
+  rf_float3 d =
+    len > 0.0 && !rf_isinf(len) ? rf_div3(directionWorld, len) : rf_make3(0.0, 1.0, 0.0);
+  rf_float horizontal = rf_sqrt(d.x * d.x + d.z * d.z);
+  rf_float3 alongHorizon = horizontal > 1e-6
+    ? rf_make3(-d.z / horizontal, 0.0, d.x / horizontal)
+    : rf_make3(1.0, 0.0, 0.0);
+  rf_float3 upMeridian = horizontal > 1e-6
+    ? rf_make3(-d.x * d.y / horizontal, horizontal, -d.z * d.y / horizontal)
+    : rf_make3(0.0, 0.0, 1.0);
+  return rfk_builtin_environment_footprint(
+    directionWorld, rf_scale3(upMeridian, w), rf_scale3(alongHorizon, w));
 }
 
 /* The built-in environment along one direction (see rfk_builtin_environment_filtered). */

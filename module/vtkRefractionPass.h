@@ -430,9 +430,10 @@ public:
   ///@}
 
   ///@{
-  /// Average each environment lookup over the directions the pixel's rays spread across
-  /// (on by default): glass that shrinks the environment shows its mean rather than moire,
-  /// as a camera's pixel does. Off: one direction per ray (what closed forms sample).
+  /// Average each lookup of the environment, and of the opaque scene behind the glass, over
+  /// the directions the pixel's rays spread across (on by default): glass that shrinks them
+  /// shows their mean rather than moire, as a camera's pixel does. Off: one direction per ray
+  /// (what closed forms sample) and one texel of the captured scene.
   vtkSetMacro(FilteredLookups, bool);
   vtkGetMacro(FilteredLookups, bool);
   vtkBooleanMacro(FilteredLookups, bool);

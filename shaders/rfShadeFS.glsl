@@ -114,6 +114,19 @@ bool rfSceneInFrontAt(vec4 clipP, vec4 clipT, float t, out bool offImage)
   return scene >= 1.0 || depth < scene;
 }
 
+// The mip level of the captured scene a lookup at hitVC reads, whose ray went `distance` from
+// the glass: the footprint's short axis (rfEnvironmentWidth, radians across the pixel) spread
+// over that distance, in the capture's texels at the hit's depth (its projection there), so
+// that a scene the glass shrinks shows its mean, not moire (the lookups of the environment:
+// rfEnvironment.glsl). The short axis: the long one blurs across what the rays resolve.
+// Level 0 without RF_FILTERED_LOOKUPS (rfEnvironmentWidth 0).
+float rfSceneLevel(vec3 hitVC, float distance)
+{
+  vec4 clip = rfVCDC * vec4(hitVC, 1.0);
+  float texelsPerLength = 0.5 * rfViewport.w * abs(rfVCDC[1][1]) / max(abs(clip.w), 1e-6);
+  return log2(max(rfEnvironmentWidth * distance * texelsPerLength, 1.0));
+}
+
 // Nearby opaque geometry (Wyman 2005, seed 001, section 4): where the ray leaving the glass,
 // P + t T, first passes behind the opaque scene captured before the glass, its colour there.
 // The ray is marched in RF_SCENE_STEPS equal steps up to where it leaves the frustum, and a
@@ -181,7 +194,7 @@ bool rfSceneAlong(vec3 P, vec3 T, out vec3 colour)
       vec3 H = P + hi * T;
       if (-H.z - sceneDistance <= abs(dt * T.z) + 1e-4 * sceneDistance)
       {
-        colour = textureLod(rfSceneColor, hitTC, 0.0).rgb;
+        colour = textureLod(rfSceneColor, hitTC, rfSceneLevel(H, hi * length(T))).rgb;
         return true;
       }
     }

@@ -20,13 +20,18 @@ static rf_vec3 direction_at(int i, int count)
   return rf_vec3_make(r * cos(golden * i), y, r * sin(golden * i));
 }
 
-/* The mean of the point values over a width x width square of directions about d (in its
- * tangent plane), n x n samples. */
-static void footprint_mean(rf_vec3 d, double width, int n, double mean[3])
+/* Two unit directions across d (its tangent plane), at right angles to each other. */
+static void tangent_basis(rf_vec3 d, rf_vec3* u, rf_vec3* v)
 {
   const rf_vec3 helper = fabs(d.y) < 0.9 ? rf_vec3_make(0.0, 1.0, 0.0) : rf_vec3_make(1.0, 0.0, 0.0);
-  const rf_vec3 u = rf_vec3_normalize(rf_vec3_cross(d, helper));
-  const rf_vec3 v = rf_vec3_cross(u, d);
+  *u = rf_vec3_normalize(rf_vec3_cross(d, helper));
+  *v = rf_vec3_cross(*u, d);
+}
+
+/* The mean of the point values over the parallelogram spanned by a and b about d, n x n
+ * samples. */
+static void parallelogram_mean(rf_vec3 d, rf_vec3 a, rf_vec3 b, int n, double mean[3])
+{
   int i;
   int j;
   mean[0] = mean[1] = mean[2] = 0.0;
@@ -34,10 +39,10 @@ static void footprint_mean(rf_vec3 d, double width, int n, double mean[3])
   {
     for (i = 0; i < n; ++i)
     {
-      const double a = ((i + 0.5) / n - 0.5) * width;
-      const double b = ((j + 0.5) / n - 0.5) * width;
-      const rf_vec3 s = rf_vec3_add(d, rf_vec3_add(rf_vec3_scale(u, a), rf_vec3_scale(v, b)));
-      const double dir[3] = { s.x, s.y, s.z };
+      const double s = (i + 0.5) / n - 0.5;
+      const double t = (j + 0.5) / n - 0.5;
+      const rf_vec3 x = rf_vec3_add(d, rf_vec3_add(rf_vec3_scale(a, s), rf_vec3_scale(b, t)));
+      const double dir[3] = { x.x, x.y, x.z };
       double rgb[3];
       rf_builtin_environment(dir, rgb);
       mean[0] += rgb[0] / (n * n);
@@ -45,6 +50,16 @@ static void footprint_mean(rf_vec3 d, double width, int n, double mean[3])
       mean[2] += rgb[2] / (n * n);
     }
   }
+}
+
+/* The mean of the point values over a width x width square of directions about d (in its
+ * tangent plane), n x n samples. */
+static void footprint_mean(rf_vec3 d, double width, int n, double mean[3])
+{
+  rf_vec3 u;
+  rf_vec3 v;
+  tangent_basis(d, &u, &v);
+  parallelogram_mean(d, rf_vec3_scale(u, width), rf_vec3_scale(v, width), n, mean);
 }
 
 static double squared_distance(const double a[3], const double b[3])
@@ -131,30 +146,6 @@ static void test_extreme_widths_are_finite(void)
   CHECK(finite);
 }
 
-/* The mean of the point values over the parallelogram spanned by a and b about d, n x n
- * samples. */
-static void parallelogram_mean(rf_vec3 d, rf_vec3 a, rf_vec3 b, int n, double mean[3])
-{
-  int i;
-  int j;
-  mean[0] = mean[1] = mean[2] = 0.0;
-  for (j = 0; j < n; ++j)
-  {
-    for (i = 0; i < n; ++i)
-    {
-      const double s = (i + 0.5) / n - 0.5;
-      const double t = (j + 0.5) / n - 0.5;
-      const rf_vec3 x = rf_vec3_add(d, rf_vec3_add(rf_vec3_scale(a, s), rf_vec3_scale(b, t)));
-      const double dir[3] = { x.x, x.y, x.z };
-      double rgb[3];
-      rf_builtin_environment(dir, rgb);
-      mean[0] += rgb[0] / (n * n);
-      mean[1] += rgb[1] / (n * n);
-      mean[2] += rgb[2] / (n * n);
-    }
-  }
-}
-
 /* A footprint `ratio` times longer one way than the other, turned by a different angle about
  * each of 3000 directions: the footprint's filter against the parallelogram's mean, beside
  * one cone as wide as the short span (it aliases along the long one) and one as wide as the
@@ -172,10 +163,9 @@ static void test_long_footprints(double longSpan, double ratio)
   for (i = 0; i < count; ++i)
   {
     const rf_vec3 d = direction_at(i, count);
-    const rf_vec3 helper =
-      fabs(d.y) < 0.9 ? rf_vec3_make(0.0, 1.0, 0.0) : rf_vec3_make(1.0, 0.0, 0.0);
-    const rf_vec3 u = rf_vec3_normalize(rf_vec3_cross(d, helper));
-    const rf_vec3 v = rf_vec3_cross(u, d);
+    rf_vec3 u;
+    rf_vec3 v;
+    tangent_basis(d, &u, &v);
     const double turn = 0.7 * i;
     const rf_vec3 along = rf_vec3_add(rf_vec3_scale(u, cos(turn)), rf_vec3_scale(v, sin(turn)));
     const rf_vec3 across = rf_vec3_add(rf_vec3_scale(u, -sin(turn)), rf_vec3_scale(v, cos(turn)));

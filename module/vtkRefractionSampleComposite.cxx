@@ -60,26 +60,14 @@ void vtkRefractionSampleComposite::Render(vtkOpenGLRenderer* ren,
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   ostate->vtkglDisable(GL_BLEND);
   surface->Activate();
-  // The silhouette's fragments whose pixel centre is off the glass take the glass colour
-  // around their pixel from mipmap levels 1 and 2 (rfGeometryFS.glsl, rfSampleComposite),
-  // filtered; the shading stage cleared the texels without glass to 0. Only for this draw:
-  // every other reader fetches level 0 texels, and a mipmapped filter with levels left from
-  // another size would make the texture incomplete (every fetch black).
-  const int minification = colour->GetMinificationFilter();
-  const int magnification = colour->GetMagnificationFilter();
-  const int maxLevel = colour->GetMaxLevel();
-  colour->SetMinificationFilter(vtkTextureObject::LinearMipmapNearest);
-  colour->SetMagnificationFilter(vtkTextureObject::Linear);
-  colour->SetMaxLevel(2);
-  colour->Activate();
-  glGenerateMipmap(GL_TEXTURE_2D);
-  geometry->SetCompositeInputs(surface->GetTextureUnit(), colour->GetTextureUnit(), corners);
-  geometry->DrawOnScreen(ren, vtkRefractionGeometryStage::STAGE_COMPOSITE);
-  colour->SetMinificationFilter(minification);
-  colour->SetMagnificationFilter(magnification);
-  colour->SetMaxLevel(maxLevel);
-  colour->Activate(); // sends the changed parameters to the texture again
-  colour->Deactivate();
+  {
+    // The silhouette's fragments whose pixel centre is off the glass take the glass colour
+    // around their pixel from mipmap levels 1 and 2 (rfGeometryFS.glsl, rfSampleComposite),
+    // filtered; the shading stage cleared the texels without glass to 0. Only for this draw.
+    vtkRefractionTargets::ScopedMipmaps levels(targets, vtkRefractionTargets::GLASS_COLOR,
+      vtkTextureObject::LinearMipmapNearest, vtkTextureObject::Linear, 2);
+    geometry->SetCompositeInputs(surface->GetTextureUnit(), colour->GetTextureUnit(), corners);
+    geometry->DrawOnScreen(ren, vtkRefractionGeometryStage::STAGE_COMPOSITE);
+  }
   surface->Deactivate();
-  targets->CountMipmaps(vtkRefractionTargets::GLASS_COLOR);
 }

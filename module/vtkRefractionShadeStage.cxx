@@ -76,55 +76,6 @@ const TargetSampler kSamplers[] = {
 
 namespace
 {
-// The scene captured behind the glass with its mip levels while the shading reads it, for
-// lookups averaged over the rays' footprint (rfSceneLevel in rfShadeFS.glsl); its filter set
-// back after, as the glass colour's is (vtkRefractionSampleComposite): every other reader
-// fetches level 0, and a mipmapped filter with levels left from another size would make the
-// texture incomplete. The magnification filter stays: a footprint within a texel reads the
-// texel, as without the levels.
-class ScopedSceneMipmaps
-{
-public:
-  explicit ScopedSceneMipmaps(vtkTextureObject* scene)
-    : Scene(scene)
-  {
-    if (!this->Scene)
-    {
-      return;
-    }
-    this->Minification = this->Scene->GetMinificationFilter();
-    this->MaxLevel = this->Scene->GetMaxLevel();
-    unsigned int size = std::max(this->Scene->GetWidth(), this->Scene->GetHeight());
-    int levels = 0;
-    for (; size > 1; size /= 2)
-    {
-      ++levels;
-    }
-    this->Scene->SetMinificationFilter(vtkTextureObject::LinearMipmapLinear);
-    this->Scene->SetMaxLevel(levels);
-    this->Scene->Activate();
-    glGenerateMipmap(GL_TEXTURE_2D);
-    this->Scene->Deactivate();
-  }
-  ~ScopedSceneMipmaps()
-  {
-    if (this->Scene)
-    {
-      this->Scene->SetMinificationFilter(this->Minification);
-      this->Scene->SetMaxLevel(this->MaxLevel);
-      this->Scene->Activate(); // sends the filter to the texture again
-      this->Scene->Deactivate();
-    }
-  }
-  ScopedSceneMipmaps(const ScopedSceneMipmaps&) = delete;
-  ScopedSceneMipmaps& operator=(const ScopedSceneMipmaps&) = delete;
-
-private:
-  vtkTextureObject* Scene;
-  int Minification = vtkTextureObject::Nearest;
-  int MaxLevel = 0;
-};
-
 // Binds every allocated target whose sampler the program reads; returns them, to deactivate.
 std::vector<vtkTextureObject*> BindTargets(vtkShaderProgram* program, vtkRefractionTargets* targets)
 {
@@ -419,14 +370,21 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
   {
     return;
   }
+  // The scene captured behind the glass with all its mip levels while the shading reads it,
+  // for lookups averaged over the rays' footprint (rfSceneLevel in rfShadeFS.glsl). The
+  // magnification filter stays: a footprint within a texel reads the texel, as without them.
   vtkTextureObject* scene = frame.SceneRefraction && settings->GetFilteredLookups()
     ? targets->Get(vtkRefractionTargets::SCENE_COLOR)
     : nullptr;
-  ScopedSceneMipmaps sceneLevels(scene);
-  if (scene)
+  int sceneLevels = 0;
+  for (unsigned int size = scene ? std::max(scene->GetWidth(), scene->GetHeight()) : 0; size > 1;
+       size /= 2)
   {
-    targets->CountMipmaps(vtkRefractionTargets::SCENE_COLOR);
+    ++sceneLevels;
   }
+  vtkRefractionTargets::ScopedMipmaps sceneMipmaps(targets,
+    scene ? vtkRefractionTargets::SCENE_COLOR : -1, vtkTextureObject::LinearMipmapLinear,
+    scene ? scene->GetMagnificationFilter() : 0, sceneLevels);
   // The refraction into the glass colour target, with a depth buffer attached that holds 1
   // where there is nothing to shade and the quad at the far plane: GL_GREATER passes only
   // where there is, and the test runs before the program (which writes no depth), so the

@@ -188,6 +188,42 @@ void vtkRefractionTargets::CountMipmaps(int target)
 }
 
 //------------------------------------------------------------------------------
+vtkRefractionTargets::ScopedMipmaps::ScopedMipmaps(vtkRefractionTargets* targets, int target,
+  int minification, int magnification, int maxLevel)
+  : Targets(targets)
+  , Target(target)
+  , Texture(targets->Get(target))
+{
+  if (!this->Texture)
+  {
+    return;
+  }
+  this->Minification = this->Texture->GetMinificationFilter();
+  this->Magnification = this->Texture->GetMagnificationFilter();
+  this->MaxLevel = this->Texture->GetMaxLevel();
+  this->Texture->SetMinificationFilter(minification);
+  this->Texture->SetMagnificationFilter(magnification);
+  this->Texture->SetMaxLevel(maxLevel);
+  this->Texture->Activate();
+  glGenerateMipmap(GL_TEXTURE_2D);
+}
+
+//------------------------------------------------------------------------------
+vtkRefractionTargets::ScopedMipmaps::~ScopedMipmaps()
+{
+  if (!this->Texture)
+  {
+    return;
+  }
+  this->Texture->SetMinificationFilter(this->Minification);
+  this->Texture->SetMagnificationFilter(this->Magnification);
+  this->Texture->SetMaxLevel(this->MaxLevel);
+  this->Texture->Activate(); // sends the changed parameters to the texture again
+  this->Texture->Deactivate();
+  this->Targets->CountMipmaps(this->Target);
+}
+
+//------------------------------------------------------------------------------
 void vtkRefractionTargets::SetPeelSlots(int slots)
 {
   slots = slots < 1 ? 1 : slots;

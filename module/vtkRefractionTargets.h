@@ -117,6 +117,29 @@ public:
   /// measures it again the first time after each allocation, so not every frame.
   void CountMipmaps(int target);
 
+  /// A target's mip levels for the draws inside this scope: made from level 0 when it begins,
+  /// with these filters and levels up to maxLevel, the texture active on its unit throughout;
+  /// its filters and maximum level set back and its levels counted (CountMipmaps) when it
+  /// ends: every other reader fetches level 0, and a mipmapped filter with levels left from
+  /// another size would make the texture incomplete. Nothing where the target is not there.
+  class ScopedMipmaps
+  {
+  public:
+    ScopedMipmaps(vtkRefractionTargets* targets, int target, int minification,
+      int magnification, int maxLevel);
+    ~ScopedMipmaps();
+    ScopedMipmaps(const ScopedMipmaps&) = delete;
+    ScopedMipmaps& operator=(const ScopedMipmaps&) = delete;
+
+  private:
+    vtkRefractionTargets* Targets;
+    int Target;
+    vtkTextureObject* Texture;
+    int Minification = 0;
+    int Magnification = 0;
+    int MaxLevel = 0;
+  };
+
   void ReleaseGraphicsResources(vtkWindow* w);
 
 protected:

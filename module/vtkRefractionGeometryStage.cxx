@@ -106,6 +106,11 @@ void vtkRefractionGeometryStage::Configure(const std::vector<vtkProp*>& glass,
   {
     defines << "#define RF_PIECE_SHEETS\n";
   }
+  if (glass.size() > 1 || this->UsePieceSheets)
+  {
+    // The composite at the samples tells the glass materials apart at their silhouettes.
+    defines << "#define RF_COMPOSITE_MATERIALS\n";
+  }
   this->Peel = peel;
   if (peel)
   {
@@ -672,7 +677,7 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
       ->GetState()
       ->vtkglDepthMask(GL_FALSE);
   }
-  if (program->IsUniformUsed("rfCompositeSurface"))
+  if (program->IsUniformUsed("rfCompositeColour"))
   {
     // Outside the composite stage the samplers point at the last texture unit, which the unit
     // manager (it hands out units from 0) leaves free: left at 0 they could share a unit with
@@ -680,7 +685,11 @@ bool vtkRefractionGeometryStage::SetShaderParameters(vtkShaderProgram* program,
     int units = 1;
     glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &units);
     const bool composite = this->Stage == STAGE_COMPOSITE;
-    program->SetUniformi("rfCompositeSurface", composite ? this->CompositeInputs[0] : units - 1);
+    if (program->IsUniformUsed("rfCompositeSurface")) // not by one material's pixels
+    {
+      program->SetUniformi(
+        "rfCompositeSurface", composite ? this->CompositeInputs[0] : units - 1);
+    }
     program->SetUniformi("rfCompositeColour", composite ? this->CompositeInputs[1] : units - 1);
   }
   if (program->IsUniformUsed("rfMaterial"))

@@ -567,7 +567,8 @@ void vtkRefractionPass::RenderGlass(
   this->ShadeStage->Render(ren, method, this, this->Targets, frame, materialIOR, materialSheet);
   if (frame.SampleComposite)
   {
-    this->SampleComposite->Render(ren, this->GeometryStage, this->Targets, this->AntiAliasing);
+    this->SampleComposite->Render(
+      ren, this->GeometryStage, this->Targets, this->AntiAliasing, frame.GlassRectangle);
   }
   this->StageTimers->Stop(TIMED_SHADE);
   if (this->DebugOutput && this->ShadeStage->Prepare(ren, method, this, frame, true))
@@ -648,6 +649,7 @@ void vtkRefractionPass::ReleaseGraphicsResources(vtkWindow* w)
   this->DepthRange->ReleaseGraphicsResources(w);
   this->LayerPack->ReleaseGraphicsResources(w);
   this->ShadeStage->ReleaseGraphicsResources(w);
+  this->SampleComposite->ReleaseGraphicsResources(w);
   this->Targets->ReleaseGraphicsResources(w);
   this->StageTimers->ReleaseGraphicsResources();
   this->Width = 0;

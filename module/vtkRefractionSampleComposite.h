@@ -11,7 +11,8 @@
  * covers exactly the samples it covers for an opaque actor of the same mesh, each fragment
  * takes the colour the shading stage gave its pixel (at the silhouette, where its pixel's centre
  * is off the glass, the glass colour around the pixel from two mipmap levels of the shading's
- * output, which Render makes for the draw), and
+ * output, which Render makes for the draw and, without corners, fills into the texels off
+ * the glass first: shaders/rfSilhouetteFillFS.glsl), and
  * the window's resolve blends the silhouette as it blends VTK's own edges. In a
  * single-sampled framebuffer the full-screen composite is used (the same picture, cheaper).
  */
@@ -20,9 +21,14 @@
 
 #include "vtkObject.h"
 
+#include <memory> // For std::unique_ptr
+
+class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderer;
+class vtkOpenGLRenderWindow;
 class vtkRefractionGeometryStage;
 class vtkRefractionTargets;
+class vtkWindow;
 
 class vtkRefractionSampleComposite : public vtkObject
 {
@@ -39,14 +45,25 @@ public:
 
   /// The glass (GLASS_COLOR, shaded; at the pixels' corners when `corners`) into the
   /// framebuffer bound now, drawn by `geometry` with the glass props it was configured with.
+  /// `rectangle` (x, y, width, height in the targets' pixels) holds every pixel the glass
+  /// touches.
   void Render(vtkOpenGLRenderer* ren, vtkRefractionGeometryStage* geometry,
-    vtkRefractionTargets* targets, bool corners);
+    vtkRefractionTargets* targets, bool corners, const int rectangle[4]);
+
+  void ReleaseGraphicsResources(vtkWindow* w);
 
 protected:
-  vtkRefractionSampleComposite() = default;
-  ~vtkRefractionSampleComposite() override = default;
+  vtkRefractionSampleComposite();
+  ~vtkRefractionSampleComposite() override;
 
 private:
+  /// GLASS_COLOR's texels off the glass inside `rectangle` get the glass colour around them
+  /// (its mipmap levels 1 and 2, made already). False where the program cannot be built.
+  bool FillSilhouette(
+    vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, const int rectangle[4]);
+
+  std::unique_ptr<vtkOpenGLQuadHelper> FillQuad;
+
   vtkRefractionSampleComposite(const vtkRefractionSampleComposite&) = delete;
   void operator=(const vtkRefractionSampleComposite&) = delete;
 };

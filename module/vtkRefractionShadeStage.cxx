@@ -28,6 +28,15 @@
 
 vtkStandardNewMacro(vtkRefractionShadeStage);
 
+//------------------------------------------------------------------------------
+std::string vtkRefractionShadeStage::GetFarPlaneQuadVertexShader()
+{
+  std::string source = vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader();
+  vtkShaderProgram::Substitute(
+    source, "gl_Position = ndCoordIn;", "gl_Position = vec4(ndCoordIn.xy, 1.0, 1.0);");
+  return source;
+}
+
 struct vtkRefractionShadeStage::Program
 {
   std::string Defines;
@@ -42,16 +51,6 @@ struct TargetSampler
   int Target;
   const char* Name;
 };
-// VTK's full-screen quad at the far plane (window depth 1): against the front capture's depth
-// buffer (cleared to 1) a GL_GREATER test passes exactly where the glass is.
-std::string FarPlaneQuadVertexShader()
-{
-  std::string source = vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader();
-  vtkShaderProgram::Substitute(
-    source, "gl_Position = ndCoordIn;", "gl_Position = vec4(ndCoordIn.xy, 1.0, 1.0);");
-  return source;
-}
-
 const TargetSampler kSamplers[] = {
   { vtkRefractionTargets::FRONT_SURFACE, "rfFrontSurface" },
   { vtkRefractionTargets::FRONT_AUX, "rfFrontAux" },
@@ -228,7 +227,7 @@ bool vtkRefractionShadeStage::Build(
   // VTK's shader cache finds a program it built before by its source.
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   program.Quad.reset(
-    new vtkOpenGLQuadHelper(renWin, FarPlaneQuadVertexShader().c_str(), source.c_str(), ""));
+    new vtkOpenGLQuadHelper(renWin, GetFarPlaneQuadVertexShader().c_str(), source.c_str(), ""));
   program.Defines = defines;
   if (!program.Quad->Program || !program.Quad->Program->GetCompiled())
   {
@@ -641,7 +640,7 @@ void vtkRefractionShadeStage::SmoothReflectedPixels(
     std::string source = rfSmoothReflectedFSSource;
     vtkShaderProgram::Substitute(source, "//RF::ReflectedFilter", rfReflectedFilterSource);
     this->SmoothQuad.reset(
-      new vtkOpenGLQuadHelper(renWin, FarPlaneQuadVertexShader().c_str(), source.c_str(), ""));
+      new vtkOpenGLQuadHelper(renWin, GetFarPlaneQuadVertexShader().c_str(), source.c_str(), ""));
   }
   else
   {

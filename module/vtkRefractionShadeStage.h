@@ -47,6 +47,11 @@ public:
   /// The most glass materials (props) one frame distinguishes; the rest share the last.
   static constexpr int MaximumMaterials = 64;
 
+  /// VTK's full-screen quad at the far plane (window depth 1): against the front capture's
+  /// depth buffer (cleared to 1) GL_GREATER passes exactly where the glass is, GL_LEQUAL
+  /// exactly where it is not.
+  static std::string GetFarPlaneQuadVertexShader();
+
   /// The camera and environment of this frame (GL layouts, as vtkRefractionPass computes them).
   struct Frame
   {

@@ -11,6 +11,8 @@
 //               the picture differs from the pixel-by-pixel composite only at the silhouette
 //   programs    the composite's code in a program of its own or shared with the G-buffer
 //               draws (SetCompositeProgram): the same picture, switched either way
+//   overlap     a red glass ball half in front of a blue one: the near ball's silhouette over
+//               the far glass blends the two as an opaque red ball's over a blue one does
 // Each case counts the silhouette pixels of intermediate grey (partial coverage) in both
 // pictures and requires the glass to have as many as the opaque actor (within 10%), and the
 // two pictures to agree pixel by pixel up to a few grey levels. In a single-sampled window
@@ -302,6 +304,101 @@ int Programs(const std::string& outDir)
   }
   return EXIT_SUCCESS;
 }
+
+// Pixels where a red surface and a blue one blend (both channels well above 0): where the near
+// ball's silhouette lies over the far ball, nowhere else (each ball alone is pure red or blue
+// over black).
+int CountRedOverBlue(vtkImageData* image)
+{
+  int count = 0;
+  for (int y = 0; y < kSize; ++y)
+  {
+    for (int x = 0; x < kSize; ++x)
+    {
+      count += image->GetScalarComponentAsDouble(x, y, 0, 0) > 24.0 &&
+          image->GetScalarComponentAsDouble(x, y, 0, 2) > 24.0
+        ? 1
+        : 0;
+    }
+  }
+  return count;
+}
+
+// Two glass materials at the samples: the composite reads each fragment's colour at its
+// pixel, and where the pixel's centre is another glass's it takes the glass colour around
+// the pixel instead (RF_COMPOSITE_MATERIALS in rfGeometryFS.glsl), so the near ball's
+// silhouette over the far one blends as an opaque actor's does. Without that every sample of
+// a pixel takes the glass its centre shows: a hard edge between red and blue. The glass is
+// tinted to nearly pure red and blue (an absorption distance of a fiftieth of the balls'
+// size) and refracts a white environment without Fresnel reflection.
+int Overlap(const std::string& outDir)
+{
+  auto makeBalls = [](vtkSmartPointer<vtkActor>& near, vtkSmartPointer<vtkActor>& far) {
+    near = rftest::MakeSphere(0.8, 48);
+    near->SetPosition(0.5, 0.2, 0.8);
+    near->GetProperty()->SetColor(1.0, 0.0, 0.0);
+    far = rftest::MakeSphere(1.0, 48);
+    far->SetPosition(-0.5, -0.2, -0.5);
+    far->GetProperty()->SetColor(0.0, 0.0, 1.0);
+  };
+  vtkSmartPointer<vtkActor> nearOpaque, farOpaque, nearGlass, farGlass;
+  makeBalls(nearOpaque, farOpaque);
+  makeBalls(nearGlass, farGlass);
+  nearOpaque->GetProperty()->LightingOff();
+  farOpaque->GetProperty()->LightingOff();
+  vtkRefractionPass::MakeGlass(nearGlass, 1.5);
+  vtkRefractionPass::MakeGlass(farGlass, 1.5);
+  rftest::WithoutHighlights(nearGlass);
+  rftest::WithoutHighlights(farGlass);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  renderer->SetEnvironmentTexture(ConstantCube(1.0));
+  vtkNew<vtkRefractionPass> pass;
+  pass->FresnelOff();
+  pass->SetAbsorptionDistance(0.04);
+  renderer->SetPass(pass);
+  auto window = rftest::MakeWindow(renderer, kSize, kSize);
+  rftest::LookAtOrigin(renderer, 6.0, 0.0);
+  renderer->GetActiveCamera()->SetClippingRange(1.0, 20.0);
+
+  renderer->AddActor(nearOpaque);
+  renderer->AddActor(farOpaque);
+  window->Render();
+  auto plain = rftest::Grab(window);
+  renderer->RemoveActor(nearOpaque);
+  renderer->RemoveActor(farOpaque);
+  renderer->AddActor(nearGlass);
+  renderer->AddActor(farGlass);
+  window->Render();
+  auto drawn = rftest::Grab(window);
+  RF_REQUIRE(pass->GetNumberOfGlassProps() == 2, "the balls were not drawn as glass");
+  pass->MultiSampleSilhouetteOff();
+  window->Render();
+  auto pixelwise = rftest::Grab(window);
+  const std::string prefix =
+    outDir + "/silhouette_overlap_" + std::to_string(window->GetMultiSamples()) + "x_";
+  rftest::WritePNG(plain, prefix + "opaque.png");
+  rftest::WritePNG(drawn, prefix + "glass.png");
+  const int opaqueCount = CountRedOverBlue(plain);
+  const int glassCount = CountRedOverBlue(drawn);
+  const int pixelwiseCount = CountRedOverBlue(pixelwise);
+  std::printf("overlap: window multisamples %d; pixels blending red and blue: opaque balls %d, "
+              "glass %d (%d with MultiSampleSilhouette off)\n",
+    window->GetMultiSamples(), opaqueCount, glassCount, pixelwiseCount);
+  if (opaqueCount < 5)
+  {
+    // Single-sampled: hard edges everywhere.
+    RF_REQUIRE(glassCount < 5, "%d blended pixels in a single-sampled window", glassCount);
+    return EXIT_SUCCESS;
+  }
+  RF_REQUIRE(glassCount >= opaqueCount / 2 && glassCount <= 2 * opaqueCount,
+    "the near glass's silhouette over the far glass has %d blended pixels, the opaque balls' "
+    "%d", glassCount, opaqueCount);
+  RF_REQUIRE(pixelwiseCount < opaqueCount / 4,
+    "pixel by pixel the glass has %d blended pixels: the check cannot tell", pixelwiseCount);
+  return EXIT_SUCCESS;
+}
 }
 
 int main(int argc, char* argv[])
@@ -314,6 +411,10 @@ int main(int argc, char* argv[])
   if (name == "programs")
   {
     return Programs(argc > 2 ? argv[2] : ".");
+  }
+  if (name == "overlap")
+  {
+    return Overlap(argc > 2 ? argv[2] : ".");
   }
   if (name != "sphere" && name != "sphere_aa" && name != "torus")
   {

@@ -3,7 +3,8 @@
 // (both kept), points not measured (left out); and the summary's verdict on the default
 // setting, dominated on one mesh and on the front on another, with the row of the pass without
 // glass (the fastest, error 0) kept out of the front, and a verdict inside the timing's noise
-// said to be so. The plot of those rows (argument: the PNG to write), whose cone has a front
+// said to be so; with the rim's PSNR as a third axis, a default dominated on the two axes but
+// closer on the rim is on the front, and rows without rim figures are judged on two axes. The plot of those rows (argument: the PNG to write), whose cone has a front
 // of one row: drawn as a mark, without VTK's error about a line through one point (ctest fails
 // the test on any error output).
 #include "rfBenchPareto.h"
@@ -84,20 +85,33 @@ int main(int argc, char* argv[])
     MakeRow("ring", Named("PEEL"), 10.0, 0.05),
     MakeRow("cone", Dir(false), 2.0, 0.1),
     MakeRow("cone", Dir(true), 1.8, 0.09),
+    MakeRow("disc", Dir(false), 2.0, 0.1),
+    MakeRow("disc", Dir(true), 1.5, 0.05),
   };
   rows[6].Ratio.Min = 1.7; // the default's repeats reach below the dominating row's slowest
   rows[7].Ratio.Max = 1.9;
+  rows[6].FullSS.PsnrRim = 18.0; // the cone's: DIR 5 AA as close on the rim too
+  rows[7].FullSS.PsnrRim = 18.0;
+  rows[8].FullSS.PsnrRim = 20.0; // the disc's: the default closer on the rim
+  rows[9].FullSS.PsnrRim = 16.0;
   const std::string summary = rfbench::ParetoSummary(rows);
   std::printf("%s", summary.c_str());
   RF_REQUIRE(summary.find("| ball | SIR 1.00x / 10.5 dB, DIR 5 AA 1.50x / 26.0 dB | dominated by "
-                          "DIR 5 AA 1.50x / 26.0 dB |") != std::string::npos,
+                          "DIR 5 AA 1.50x / 26.0 dB; with the rim's PSNR as a third axis, "
+                          "dominated by DIR 5 AA |") != std::string::npos,
     "the ball's line");
   RF_REQUIRE(summary.find("| ring | DIR 5 2.00x / 20.0 dB, PEEL 0 10.00x / 26.0 dB | on the "
-                          "front |") != std::string::npos,
+                          "front; with the rim's PSNR as a third axis, on the front |") !=
+      std::string::npos,
     "the ring's line");
   RF_REQUIRE(summary.find("| cone | DIR 5 AA 1.80x / 20.9 dB | dominated by DIR 5 AA 1.80x / 20.9 "
-                          "dB (the ratios' spreads overlap) |") != std::string::npos,
+                          "dB (the ratios' spreads overlap); with the rim's PSNR as a third "
+                          "axis, dominated by DIR 5 AA |") != std::string::npos,
     "the cone's line");
+  RF_REQUIRE(summary.find("| disc | DIR 5 AA 1.50x / 26.0 dB | dominated by DIR 5 AA 1.50x / "
+                          "26.0 dB; with the rim's PSNR as a third axis, on the front |") !=
+      std::string::npos,
+    "the disc's line");
 
   vtksys::SystemTools::RemoveFile(argv[1]);
   vtkSmartPointer<vtkRenderWindow> window = rftest::NewRenderWindow(64, 64);

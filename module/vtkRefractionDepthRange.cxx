@@ -5,13 +5,13 @@
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLCamera.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkProp.h"
+#include "vtkRefractionTargetDraw.h"
 #include "vtkRefractionTargets.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -51,17 +51,10 @@ bool vtkRefractionDepthRange::Reduce(
     return false;
   }
   vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
-  fbo->SaveCurrentBindingsAndBuffers();
-  fbo->Bind();
   {
-    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
+    vtkRefractionTargetDraw draw(renWin, targets, {}, nullptr);
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglDisable(GL_DEPTH_TEST);
-    fbo->RemoveDepthAttachment();
     vtkTextureObject* source = targets->Get(vtkRefractionTargets::BACK_SURFACE);
     const auto& levels = targets->GetReductionLevels();
     // The source's texels that hold data: [x0, x1) x [y0, y1). Outside them a level keeps what
@@ -82,10 +75,9 @@ bool vtkRefractionDepthRange::Reduce(
       vtkShaderProgram* program = level == 0 ? first : later;
       renWin->GetShaderCache()->ReadyShaderProgram(program);
       vtkTextureObject* target = levels[level];
-      fbo->AddColorAttachment(0, target);
-      fbo->ActivateDrawBuffers(1);
-      const int w = static_cast<int>(target->GetWidth());
-      const int h = static_cast<int>(target->GetHeight());
+      draw.Attach({ target }, nullptr);
+      const int w = draw.GetWidth();
+      const int h = draw.GetHeight();
       // The target's texels whose blocks hold valid source texels.
       const int block = vtkRefractionTargets::ReductionBlock;
       const int written[4] = { valid[0] / block, valid[1] / block,
@@ -94,7 +86,6 @@ bool vtkRefractionDepthRange::Reduce(
       {
         break;
       }
-      ostate->vtkglViewport(0, 0, w, h);
       ostate->vtkglScissor(written[0], written[1], written[2] - written[0], written[3] - written[1]);
       source->Activate();
       program->SetUniformi("rfSource", source->GetTextureUnit());
@@ -108,8 +99,6 @@ bool vtkRefractionDepthRange::Reduce(
       std::copy(written, written + 4, valid);
     }
   }
-  fbo->UnBind();
-  fbo->RestorePreviousBindingsAndBuffers();
   return true;
 }
 

@@ -14,6 +14,7 @@
 #include "vtkRefractionGlassKeys.h"
 #include "vtkRefractionMeshes.h"
 #include "vtkRefractionModelMatrix.h"
+#include "vtkRefractionTargetDraw.h"
 #include "vtkRefractionTargets.h"
 #include "vtkRenderState.h"
 #include "vtkShaderProgram.h"
@@ -215,32 +216,18 @@ void vtkRefractionGeometryStage::DrawIntoTargets(vtkOpenGLRenderer* ren,
 {
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
-  vtkTextureObject* first = targets->Get(colours.front());
-  this->Width = static_cast<int>(first->GetWidth());
-  this->Height = static_cast<int>(first->GetHeight());
-  this->Origin[0] = 0;
-  this->Origin[1] = 0;
-  fbo->SaveCurrentBindingsAndBuffers();
-  fbo->Bind();
-  const int buffers = static_cast<int>(colours.size());
-  for (int i = 0; i < buffers; ++i)
+  std::vector<vtkTextureObject*> textures;
+  for (int colour : colours)
   {
-    fbo->AddColorAttachment(static_cast<unsigned int>(i), targets->Get(colours[i]));
+    textures.push_back(targets->Get(colour));
   }
-  fbo->AddDepthAttachment(targets->Get(depth));
-  fbo->ActivateDrawBuffers(buffers);
-  this->ActiveDrawBuffers = buffers;
   {
-    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
-    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
-    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
-    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-    ostate->vtkglViewport(0, 0, this->Width, this->Height);
+    vtkRefractionTargetDraw draw(renWin, targets, textures, targets->Get(depth));
+    this->Width = draw.GetWidth();
+    this->Height = draw.GetHeight();
+    this->Origin[0] = 0;
+    this->Origin[1] = 0;
+    this->ActiveDrawBuffers = static_cast<int>(textures.size());
     ostate->vtkglScissor(0, 0, this->Width, this->Height);
     ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -254,12 +241,6 @@ void vtkRefractionGeometryStage::DrawIntoTargets(vtkOpenGLRenderer* ren,
     this->DrawProps(ren, stage);
   }
   this->ActiveDrawBuffers = 0;
-  for (int i = buffers - 1; i > 0; --i)
-  {
-    fbo->RemoveColorAttachment(static_cast<unsigned int>(i));
-  }
-  fbo->UnBind();
-  fbo->RestorePreviousBindingsAndBuffers();
 }
 
 //------------------------------------------------------------------------------
@@ -408,45 +389,25 @@ int vtkRefractionGeometryStage::DrawPeelKBuffer(
   this->Origin[0] = 0;
   this->Origin[1] = 0;
   const GLuint emptySlot = 0xFFFFFFFFu;
-  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
-  fbo->SaveCurrentBindingsAndBuffers();
-  fbo->Bind();
-  vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-  vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
-  vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
-  vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
-  ostate->vtkglDisable(GL_SCISSOR_TEST);
-  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   // The clears are the framebuffer's (glClearTexImage took about 4 ms a layer at 512 x 512 on
   // llvmpipe). The last frame's draws wrote these textures through the images.
   glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);
-  fbo->RemoveDepthAttachment();
-  fbo->AddColorAttachment(0, slots);
-  fbo->ActivateDrawBuffers(1);
-  ostate->vtkglViewport(0, 0, this->Width, static_cast<int>(slots->GetHeight()));
+  vtkRefractionTargetDraw draw(renWin, targets, { slots }, nullptr);
+  ostate->vtkglDisable(GL_SCISSOR_TEST);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   glClearBufferuiv(GL_COLOR, 0, &emptySlot);
+  std::vector<vtkTextureObject*> peeled;
   for (int layer = 1; layer < layers; ++layer)
   {
-    fbo->AddColorAttachment(
-      static_cast<unsigned int>(layer - 1), targets->Get(vtkRefractionTargets::PEEL_1 + layer - 1));
+    peeled.push_back(targets->Get(vtkRefractionTargets::PEEL_1 + layer - 1));
   }
-  fbo->ActivateDrawBuffers(static_cast<unsigned int>(layers - 1));
-  ostate->vtkglViewport(0, 0, this->Width, this->Height);
+  draw.Attach(peeled, nullptr);
   ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
   ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-  for (int layer = layers - 1; layer > 1; --layer)
-  {
-    fbo->RemoveColorAttachment(static_cast<unsigned int>(layer - 1));
-  }
   // The draws write through the images only: a framebuffer of the targets' size whose colour
   // (the packed depths, written after) is masked and whose depth is not tested.
-  fbo->AddColorAttachment(0, targets->Get(vtkRefractionTargets::PEEL_DEPTHS_A));
-  fbo->AddDepthAttachment(targets->Get(vtkRefractionTargets::PEEL_Z));
-  fbo->ActivateDrawBuffers(1);
+  draw.Attach({ targets->Get(vtkRefractionTargets::PEEL_DEPTHS_A) },
+    targets->Get(vtkRefractionTargets::PEEL_Z));
   ostate->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   ostate->vtkglDepthMask(GL_FALSE);
   ostate->vtkglDisable(GL_DEPTH_TEST);
@@ -467,11 +428,9 @@ int vtkRefractionGeometryStage::DrawPeelKBuffer(
   // over the pixels into the texel past the last slot (rfPeelInsertDepth). Read now, as the
   // peeling's occlusion queries are: the shading follows only the layers found.
   GLuint count = emptySlot;
-  fbo->AddColorAttachment(0, slots);
-  fbo->ActivateReadBuffer(0);
+  draw.Attach({ slots }, nullptr);
+  draw.GetFramebuffer()->ActivateReadBuffer(0);
   glReadPixels(0, this->Height * (layers - 1), 1, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, &count);
-  fbo->UnBind();
-  fbo->RestorePreviousBindingsAndBuffers();
   const int behindFront = static_cast<int>(emptySlot - count);
   return 1 + std::min(std::max(behindFront, 0), layers - 1);
 }
@@ -613,6 +572,7 @@ bool vtkRefractionGeometryStage::ReplaceGlassShaderValues(std::string& fragmentS
   const std::string body = source.substr(marker + std::string(kImplMarker).size());
   vtkShaderProgram::Substitute(
     declarations, "//RF::Common", std::string(rfKernelSource) + rfCommonSource);
+  vtkShaderProgram::Substitute(declarations, "//RF::GlassAround", rfGlassAroundSource);
   // The mapper declares vertexVC only with lighting, and normalVCVSOutput only with normals
   // or lighting; otherwise rebuild them from the fragment's coordinates.
   const bool haveVertexVC = fragmentShader.find("vec4 vertexVC") != std::string::npos;

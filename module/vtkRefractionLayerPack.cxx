@@ -1,12 +1,12 @@
 #include "vtkRefractionLayerPack.h"
 
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkRefractionTargetDraw.h"
 #include "vtkRefractionTargets.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -74,39 +74,19 @@ bool vtkRefractionLayerPack::Pack(
     sources.push_back(texture);
   }
   vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
-  vtkTextureObject* packed = targets->Get(vtkRefractionTargets::PEEL_DEPTHS_A);
-  const int buffers = layers > 4 ? 2 : 1;
-  fbo->SaveCurrentBindingsAndBuffers();
-  fbo->Bind();
-  fbo->AddColorAttachment(0, packed);
-  if (buffers == 2)
+  std::vector<vtkTextureObject*> packed{ targets->Get(vtkRefractionTargets::PEEL_DEPTHS_A) };
+  if (layers > 4)
   {
-    fbo->AddColorAttachment(1, targets->Get(vtkRefractionTargets::PEEL_DEPTHS_B));
+    packed.push_back(targets->Get(vtkRefractionTargets::PEEL_DEPTHS_B));
   }
-  fbo->RemoveDepthAttachment();
-  fbo->ActivateDrawBuffers(buffers);
   {
-    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-    const int width = static_cast<int>(packed->GetWidth());
-    const int height = static_cast<int>(packed->GetHeight());
-    ostate->vtkglViewport(0, 0, width, height);
-    ostate->vtkglScissor(0, 0, width, height);
+    vtkRefractionTargetDraw draw(renWin, targets, packed, nullptr);
+    ostate->vtkglScissor(0, 0, draw.GetWidth(), draw.GetHeight());
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglDisable(GL_DEPTH_TEST);
     this->Quad->Render();
   }
-  if (buffers == 2)
-  {
-    fbo->RemoveColorAttachment(1);
-  }
-  fbo->UnBind();
-  fbo->RestorePreviousBindingsAndBuffers();
   for (vtkTextureObject* texture : sources)
   {
     texture->Deactivate();

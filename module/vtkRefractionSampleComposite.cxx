@@ -1,7 +1,6 @@
 #include "vtkRefractionSampleComposite.h"
 
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
@@ -9,6 +8,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkRefractionGeometryStage.h"
 #include "vtkRefractionShadeStage.h"
+#include "vtkRefractionTargetDraw.h"
 #include "vtkRefractionTargets.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -102,20 +102,22 @@ void vtkRefractionSampleComposite::Render(vtkOpenGLRenderer* ren,
 }
 
 //------------------------------------------------------------------------------
-bool vtkRefractionSampleComposite::FillSilhouette(
+void vtkRefractionSampleComposite::FillSilhouette(
   vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, const int rectangle[4])
 {
   vtkTextureObject* colour = targets->Get(vtkRefractionTargets::GLASS_COLOR);
   vtkTextureObject* frontDepth = targets->Get(vtkRefractionTargets::FRONT_DEPTH);
   if (!colour || !frontDepth)
   {
-    return false;
+    return;
   }
   if (!this->FillQuad)
   {
+    std::string fragmentShader = rfSilhouetteFillFSSource;
+    vtkShaderProgram::Substitute(fragmentShader, "//RF::GlassAround", rfGlassAroundSource);
     this->FillQuad.reset(new vtkOpenGLQuadHelper(renWin,
-      vtkRefractionShadeStage::GetFarPlaneQuadVertexShader().c_str(),
-      rfSilhouetteFillFSSource, ""));
+      vtkRefractionShadeStage::GetFarPlaneQuadVertexShader().c_str(), fragmentShader.c_str(),
+      ""));
   }
   else
   {
@@ -126,26 +128,11 @@ bool vtkRefractionSampleComposite::FillSilhouette(
   {
     vtkErrorMacro("Could not build the glass silhouette's fill; the glass's silhouette at the "
                   "window's samples covers only the pixels whose centre is glass.");
-    return false;
+    return;
   }
   vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
-  fbo->SaveCurrentBindingsAndBuffers();
-  fbo->Bind();
-  fbo->AddColorAttachment(0, colour);
-  fbo->AddDepthAttachment(frontDepth);
-  fbo->ActivateDrawBuffers(1);
   {
-    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
-    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
-    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
-    ostate->vtkglViewport(
-      0, 0, static_cast<int>(colour->GetWidth()), static_cast<int>(colour->GetHeight()));
+    vtkRefractionTargetDraw draw(renWin, targets, { colour }, frontDepth);
     ostate->vtkglScissor(rectangle[0], rectangle[1], rectangle[2], rectangle[3]);
     ostate->vtkglEnable(GL_SCISSOR_TEST);
     ostate->vtkglDisable(GL_BLEND);
@@ -167,8 +154,4 @@ bool vtkRefractionSampleComposite::FillSilhouette(
     colour->SetBaseLevel(0);
     colour->Activate(); // sends the base level again; left active for the composite's draw
   }
-  fbo->RemoveDepthAttachment();
-  fbo->UnBind();
-  fbo->RestorePreviousBindingsAndBuffers();
-  return true;
 }

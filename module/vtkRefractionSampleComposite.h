@@ -58,8 +58,9 @@ protected:
 
 private:
   /// GLASS_COLOR's texels off the glass inside `rectangle` get the glass colour around them
-  /// (its mipmap levels 1 and 2, made already). False where the program cannot be built.
-  bool FillSilhouette(
+  /// (its mipmap levels 1 and 2, made already). Where its program cannot be built, an error
+  /// says so and the texels stay 0: the silhouette is then the pixel-by-pixel one.
+  void FillSilhouette(
     vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, const int rectangle[4]);
 
   std::unique_ptr<vtkOpenGLQuadHelper> FillQuad;

@@ -16,6 +16,7 @@
 #include "vtkRefractionLights.h"
 #include "vtkRefractionMethod.h"
 #include "vtkRefractionPass.h"
+#include "vtkRefractionTargetDraw.h"
 #include "vtkRefractionTargets.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -360,7 +361,8 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
   vtkRefractionPass* settings, vtkRefractionTargets* targets, const Frame& frame,
   const std::vector<float>& materialIOR, const std::vector<float>& materialSheet)
 {
-  vtkOpenGLState* ostate = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+  vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkOpenGLState* ostate = renWin->GetState();
   const bool corners = settings->GetAntiAliasing();
   vtkTextureObject* glassColour = targets->Get(vtkRefractionTargets::GLASS_COLOR);
   vtkTextureObject* frontDepth = targets->Get(vtkRefractionTargets::FRONT_DEPTH);
@@ -405,24 +407,9 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
   {
     traceDepth = nullptr; // every pixel traces its own ray
   }
-  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
-  fbo->SaveCurrentBindingsAndBuffers();
-  fbo->Bind();
-  fbo->AddColorAttachment(0, shaded ? shaded : glassColour);
-  fbo->AddDepthAttachment(traceDepth ? traceDepth : corners ? cornerDepth : frontDepth);
-  fbo->ActivateDrawBuffers(1);
   {
-    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
-    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
-    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
-    const int width = static_cast<int>(glassColour->GetWidth());
-    const int height = static_cast<int>(glassColour->GetHeight());
-    ostate->vtkglViewport(0, 0, width, height);
+    vtkTextureObject* depth = traceDepth ? traceDepth : corners ? cornerDepth : frontDepth;
+    vtkRefractionTargetDraw draw(renWin, targets, { shaded ? shaded : glassColour }, depth);
     // Only where the glass can be: llvmpipe visits every 4x4 block a quad covers, glass or not.
     const int* r = frame.GlassRectangle;
     ostate->vtkglScissor(r[0], r[1], r[2], r[3]);
@@ -465,12 +452,8 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
       ren, method, settings, targets, frame, materialIOR, materialSheet, PROGRAM_SHADE);
     if (shaded)
     {
-      fbo->AddColorAttachment(0, glassColour);
-      if (traceDepth)
-      {
-        fbo->AddDepthAttachment(frontDepth); // every glass pixel again, not the traced ones
-      }
-      fbo->ActivateDrawBuffers(1);
+      // Every glass pixel again, not only the traced ones.
+      draw.Attach({ glassColour }, traceDepth ? frontDepth : depth);
       if (frame.SampleComposite)
       {
         this->ClearColourTarget(ostate);
@@ -478,9 +461,6 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
       this->SmoothReflectedPixels(ren, shaded);
     }
   }
-  fbo->RemoveDepthAttachment();
-  fbo->UnBind();
-  fbo->RestorePreviousBindingsAndBuffers();
   if (!frame.SampleComposite)
   {
     this->Composite(ren, targets, corners, frame.GlassRectangle);
@@ -508,23 +488,8 @@ bool vtkRefractionShadeStage::DrawCoarseSamples(vtkOpenGLRenderer* ren,
   }
   const int width = static_cast<int>(colour->GetWidth());
   const int height = static_cast<int>(colour->GetHeight());
-  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
-  fbo->SaveCurrentBindingsAndBuffers();
-  fbo->Bind();
-  fbo->AddColorAttachment(0, colour);
-  fbo->AddColorAttachment(1, ray);
-  fbo->AddDepthAttachment(coarseDepth);
-  fbo->ActivateDrawBuffers(2);
   {
-    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
-    vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(ostate);
-    vtkOpenGLState::ScopedglDepthMask depthMaskSaver(ostate);
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglEnableDisable scissorTestSaver(ostate, GL_SCISSOR_TEST);
-    ostate->vtkglViewport(0, 0, width, height);
+    vtkRefractionTargetDraw draw(renWin, targets, { colour, ray }, coarseDepth);
     ostate->vtkglDisable(GL_BLEND);
     ostate->vtkglEnable(GL_DEPTH_TEST);
     // Every block's texel holds 0 (no glass) unless this frame traces it: the pixels read the
@@ -554,10 +519,6 @@ bool vtkRefractionShadeStage::DrawCoarseSamples(vtkOpenGLRenderer* ren,
     this->Draw(ren, method, settings, targets, frame, materialIOR, materialSheet,
       PROGRAM_COARSE_SAMPLES);
   }
-  fbo->RemoveColorAttachment(1);
-  fbo->RemoveDepthAttachment();
-  fbo->UnBind();
-  fbo->RestorePreviousBindingsAndBuffers();
   return true;
 }
 
@@ -826,26 +787,14 @@ vtkSmartPointer<vtkImageData> vtkRefractionShadeStage::RenderDebug(vtkOpenGLRend
 {
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   vtkOpenGLState* ostate = renWin->GetState();
-  vtkOpenGLFramebufferObject* fbo = targets->GetFramebuffer();
   vtkTextureObject* first = targets->Get(vtkRefractionTargets::DEBUG_0);
   const int width = static_cast<int>(first->GetWidth());
   const int height = static_cast<int>(first->GetHeight());
   const vtkIdType count = static_cast<vtkIdType>(width) * height;
   std::vector<float> pixels[2];
-  fbo->SaveCurrentBindingsAndBuffers();
-  fbo->Bind();
-  fbo->AddColorAttachment(0, first);
-  fbo->AddColorAttachment(1, targets->Get(vtkRefractionTargets::DEBUG_1));
-  fbo->RemoveDepthAttachment();
-  fbo->ActivateDrawBuffers(2);
   {
-    vtkOpenGLState::ScopedglViewport viewportSaver(ostate);
-    vtkOpenGLState::ScopedglScissor scissorSaver(ostate);
-    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
-    vtkOpenGLState::ScopedglColorMask colorMaskSaver(ostate);
-    vtkOpenGLState::ScopedglEnableDisable blendSaver(ostate, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable depthSaver(ostate, GL_DEPTH_TEST);
-    ostate->vtkglViewport(0, 0, width, height);
+    vtkRefractionTargetDraw draw(
+      renWin, targets, { first, targets->Get(vtkRefractionTargets::DEBUG_1) }, nullptr);
     ostate->vtkglScissor(0, 0, width, height);
     ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
@@ -857,14 +806,11 @@ vtkSmartPointer<vtkImageData> vtkRefractionShadeStage::RenderDebug(vtkOpenGLRend
     for (int i = 0; i < 2; ++i)
     {
       pixels[i].resize(4 * count);
-      fbo->ActivateReadBuffer(i);
+      draw.GetFramebuffer()->ActivateReadBuffer(i);
       // Rows are whole floats: no row padding whatever GL_PACK_ALIGNMENT says.
       glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, pixels[i].data());
     }
   }
-  fbo->RemoveColorAttachment(1);
-  fbo->UnBind();
-  fbo->RestorePreviousBindingsAndBuffers();
 
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(width, height, 1);

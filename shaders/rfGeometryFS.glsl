@@ -110,6 +110,8 @@ uniform sampler2D rfCompositeColour;
 
 #ifdef RF_SAMPLE_COMPOSITE
 #ifdef RF_COMPOSITE_CORNERS
+//RF::GlassAround
+
 // The shaded glass at pixel p: the mean of those of its four corners that lie on the glass;
 // alpha 0 where it has none.
 vec4 rfCompositeAt(ivec2 p, ivec2 last)
@@ -126,16 +128,14 @@ vec4 rfCompositeAt(ivec2 p, ivec2 last)
 // shaded as this material (every pixel inside the silhouette: exactly the full-screen
 // composite's colour); at the silhouette, where the fragment covers samples of a pixel whose
 // centre lies off this glass, the glass colour around the pixel: levels 1 and 2 of the glass
-// colour's mipmaps (vtkRefractionSampleComposite makes them; texels without glass are 0, so
-// rgb / a is the mean of the glass colours there), filtered at the pixel's centre, whatever
-// glass it is; for the pixels (no corners) filled into the glass colour's texels off the glass
+// colour's mipmaps (vtkRefractionSampleComposite makes them) at the pixel's centre
+// (rfGlassAround), whatever glass it is; for the pixels (no corners) filled into the glass colour's texels off the glass
 // before the draw, so that the fragments inside the silhouette do not pay for the lookups.
 // Alpha 0: none near (a sliver between pixel centres), the fragment is dropped.
 vec4 rfSampleComposite(float material)
 {
   ivec2 last = ivec2(rfViewport.zw) - 1;
   ivec2 pixel = clamp(ivec2(gl_FragCoord.xy - rfViewport.xy), ivec2(0), last);
-  vec2 centre = (vec2(pixel) + 0.5) / rfViewport.zw;
 #ifdef RF_COMPOSITE_CORNERS
   if (abs(texelFetch(rfCompositeSurface, pixel, 0).w - material) < 0.5)
   {
@@ -148,11 +148,7 @@ vec4 rfSampleComposite(float material)
   // Texel (i, j) is the lower-left corner of pixel (i, j): the pixel's centre lies on texel
   // boundaries one further on. Two filtered fetches instead of a search of the 3x3
   // neighbours, which llvmpipe ran for every fragment of the draw (up to 45 fetches).
-  centre = (vec2(pixel) + 1.0) / rfViewport.zw;
-  vec4 near = textureLod(rfCompositeColour, centre, 1.0);
-  vec4 wider = textureLod(rfCompositeColour, centre, 2.0);
-  vec4 sum = near.a > 1e-3 ? near : wider;
-  return sum.a > 1e-3 ? vec4(sum.rgb / sum.a, 1.0) : vec4(0.0);
+  return rfGlassAround(rfCompositeColour, (vec2(pixel) + 1.0) / rfViewport.zw, 1.0);
 #else
   // The pixels: the texels off the glass already hold the glass colour around them
   // (rfSilhouetteFillFS.glsl, the same two levels), so one fetch serves every fragment.
@@ -162,6 +158,7 @@ vec4 rfSampleComposite(float material)
   // that glass) takes the glass colour around the pixel, level 1 (which holds that pixel's
   // glass, so never none; made before the fill, so glass only).
   float centreMaterial = texelFetch(rfCompositeSurface, pixel, 0).w;
+  vec2 centre = (vec2(pixel) + 0.5) / rfViewport.zw;
   vec4 around = textureLod(rfCompositeColour, centre, 1.0);
   if (centreMaterial > 0.5 && abs(centreMaterial - material) > 0.5)
   {

@@ -7,20 +7,16 @@
 // Before, each fragment of the composite filtered two mipmap levels itself, and llvmpipe ran
 // both lookups for every fragment of the draw, whichever path it took (about 7 ms of a 55 ms
 // frame at 512 on the benchmark's sphere); here they run only at the pixels that need them.
-// The glass colour around: levels 1 and 2 of the glass colour's mipmaps (texels without glass
-// are 0, so rgb / a is the mean of the glass colours there), filtered at the pixel's centre;
-// alpha 0 where neither holds glass (nothing near: the composite drops the fragment). The
-// level being written (0) is outside the levels read: the target's base level is 1 for this
-// draw, so lod 0 reads level 1.
+// The glass colour around: levels 1 and 2 of the glass colour's mipmaps, at the pixel's centre
+// (rfGlassAround). The level being written (0) is outside the levels read: the target's base
+// level is 1 for this draw, so lod 0 reads level 1.
 in vec2 texCoord;
 uniform sampler2D rfGlassColour;
 uniform vec2 rfSize;
 //VTK::Output::Dec
+//RF::GlassAround
 void main()
 {
   vec2 centre = (floor(texCoord * rfSize) + 0.5) / rfSize;
-  vec4 near = textureLod(rfGlassColour, centre, 0.0);
-  vec4 wider = textureLod(rfGlassColour, centre, 1.0);
-  vec4 sum = near.a > 1e-3 ? near : wider;
-  gl_FragData[0] = sum.a > 1e-3 ? vec4(sum.rgb / sum.a, 1.0) : vec4(0.0);
+  gl_FragData[0] = rfGlassAround(rfGlassColour, centre, 0.0);
 }

@@ -45,20 +45,70 @@ namespace
 {
 const int kSize = 160;
 
-// The silhouette's partially covered pixels: grey strictly between the object's black and the
-// background's white, with a margin of 8 levels for rounding.
-int CountIntermediate(vtkImageData* image)
+// The pixels of a kSize x kSize picture where isCounted(red, green, blue) holds.
+template <typename Predicate>
+int CountPixels(vtkImageData* image, Predicate isCounted)
 {
   int count = 0;
   for (int y = 0; y < kSize; ++y)
   {
     for (int x = 0; x < kSize; ++x)
     {
-      const double v = image->GetScalarComponentAsDouble(x, y, 0, 1);
-      count += v > 8.0 && v < 247.0 ? 1 : 0;
+      count += isCounted(image->GetScalarComponentAsDouble(x, y, 0, 0),
+                 image->GetScalarComponentAsDouble(x, y, 0, 1),
+                 image->GetScalarComponentAsDouble(x, y, 0, 2))
+        ? 1
+        : 0;
     }
   }
   return count;
+}
+
+// The silhouette's partially covered pixels: grey strictly between the object's black and the
+// background's white, with a margin of 8 levels for rounding.
+int CountIntermediate(vtkImageData* image)
+{
+  return CountPixels(image, [](double, double green, double) {
+    return green > 8.0 && green < 247.0;
+  });
+}
+
+// One scene three ways: its actors opaque; as glass, composited at the window's samples; and
+// as glass composited pixel by pixel (MultiSampleSilhouette off, left off). The first two are
+// written to prefix + "opaque.png" and "glass.png".
+struct ThreeWays
+{
+  vtkSmartPointer<vtkImageData> Opaque;
+  vtkSmartPointer<vtkImageData> Glass;
+  vtkSmartPointer<vtkImageData> PixelByPixel;
+};
+ThreeWays RenderThreeWays(vtkRenderWindow* window, vtkRenderer* renderer,
+  vtkRefractionPass* pass, std::initializer_list<vtkActor*> opaque,
+  std::initializer_list<vtkActor*> glass, const std::string& prefix)
+{
+  ThreeWays pictures;
+  for (vtkActor* actor : opaque)
+  {
+    renderer->AddActor(actor);
+  }
+  window->Render();
+  pictures.Opaque = rftest::Grab(window);
+  for (vtkActor* actor : opaque)
+  {
+    renderer->RemoveActor(actor);
+  }
+  for (vtkActor* actor : glass)
+  {
+    renderer->AddActor(actor);
+  }
+  window->Render();
+  pictures.Glass = rftest::Grab(window);
+  pass->MultiSampleSilhouetteOff();
+  window->Render();
+  pictures.PixelByPixel = rftest::Grab(window);
+  rftest::WritePNG(pictures.Opaque, prefix + "opaque.png");
+  rftest::WritePNG(pictures.Glass, prefix + "glass.png");
+  return pictures;
 }
 
 
@@ -101,21 +151,12 @@ int Silhouette(const std::string& name, const std::string& outDir)
   renderer->GetActiveCamera()->Azimuth(torus ? 17.0 : 0.0);
   renderer->GetActiveCamera()->SetClippingRange(1.0, 20.0);
 
-  renderer->AddActor(opaque);
-  window->Render();
-  auto plain = rftest::Grab(window);
-  renderer->RemoveActor(opaque);
-  renderer->AddActor(glass);
-  window->Render();
-  auto drawn = rftest::Grab(window);
+  const ThreeWays pictures = RenderThreeWays(window, renderer, pass, { opaque }, { glass },
+    outDir + "/silhouette_" + name + "_" + std::to_string(window->GetMultiSamples()) + "x_");
   RF_REQUIRE(pass->GetNumberOfGlassProps() == 1, "the glass was not drawn as glass");
-  pass->MultiSampleSilhouetteOff();
-  window->Render();
-  auto pixelwise = rftest::Grab(window);
-  const std::string prefix =
-    outDir + "/silhouette_" + name + "_" + std::to_string(window->GetMultiSamples()) + "x_";
-  rftest::WritePNG(plain, prefix + "opaque.png");
-  rftest::WritePNG(drawn, prefix + "glass.png");
+  vtkImageData* plain = pictures.Opaque;
+  vtkImageData* drawn = pictures.Glass;
+  vtkImageData* pixelwise = pictures.PixelByPixel;
 
   const int opaqueCount = CountIntermediate(plain);
   const int glassCount = CountIntermediate(drawn);
@@ -310,18 +351,9 @@ int Programs(const std::string& outDir)
 // over black).
 int CountRedOverBlue(vtkImageData* image)
 {
-  int count = 0;
-  for (int y = 0; y < kSize; ++y)
-  {
-    for (int x = 0; x < kSize; ++x)
-    {
-      count += image->GetScalarComponentAsDouble(x, y, 0, 0) > 24.0 &&
-          image->GetScalarComponentAsDouble(x, y, 0, 2) > 24.0
-        ? 1
-        : 0;
-    }
-  }
-  return count;
+  return CountPixels(image, [](double red, double, double blue) {
+    return red > 24.0 && blue > 24.0;
+  });
 }
 
 // Two glass materials at the samples: the composite reads each fragment's colour at its
@@ -362,27 +394,13 @@ int Overlap(const std::string& outDir)
   rftest::LookAtOrigin(renderer, 6.0, 0.0);
   renderer->GetActiveCamera()->SetClippingRange(1.0, 20.0);
 
-  renderer->AddActor(nearOpaque);
-  renderer->AddActor(farOpaque);
-  window->Render();
-  auto plain = rftest::Grab(window);
-  renderer->RemoveActor(nearOpaque);
-  renderer->RemoveActor(farOpaque);
-  renderer->AddActor(nearGlass);
-  renderer->AddActor(farGlass);
-  window->Render();
-  auto drawn = rftest::Grab(window);
+  const ThreeWays pictures = RenderThreeWays(window, renderer, pass,
+    { nearOpaque, farOpaque }, { nearGlass, farGlass },
+    outDir + "/silhouette_overlap_" + std::to_string(window->GetMultiSamples()) + "x_");
   RF_REQUIRE(pass->GetNumberOfGlassProps() == 2, "the balls were not drawn as glass");
-  pass->MultiSampleSilhouetteOff();
-  window->Render();
-  auto pixelwise = rftest::Grab(window);
-  const std::string prefix =
-    outDir + "/silhouette_overlap_" + std::to_string(window->GetMultiSamples()) + "x_";
-  rftest::WritePNG(plain, prefix + "opaque.png");
-  rftest::WritePNG(drawn, prefix + "glass.png");
-  const int opaqueCount = CountRedOverBlue(plain);
-  const int glassCount = CountRedOverBlue(drawn);
-  const int pixelwiseCount = CountRedOverBlue(pixelwise);
+  const int opaqueCount = CountRedOverBlue(pictures.Opaque);
+  const int glassCount = CountRedOverBlue(pictures.Glass);
+  const int pixelwiseCount = CountRedOverBlue(pictures.PixelByPixel);
   std::printf("overlap: window multisamples %d; pixels blending red and blue: opaque balls %d, "
               "glass %d (%d with MultiSampleSilhouette off)\n",
     window->GetMultiSamples(), opaqueCount, glassCount, pixelwiseCount);

@@ -26,7 +26,7 @@ std::string AccuracySummary(const std::vector<Row>& rows)
   char budget[16];
   std::snprintf(budget, sizeof(budget), "%g", AccuracyBudgetRatio);
   std::string out = "## Accuracy (" + std::to_string(size) + "x" + std::to_string(size) +
-    ")\n\nPer mesh, the pass's default setting (`DIR 5`) and, of the settings that cost at most " +
+    ")\n\nPer mesh, the pass's default setting (`DIR 5 exit`) and, of the settings that cost at most " +
     budget + " times plain VTK (median ratio), the one closest to the supersampled full "
     "reference; each as ratio / PSNR on the glass / on the rim / on TIR pixels (dB, against "
     "`full SS`) / brightness (1: as bright as the truth).\n\n"

@@ -11,14 +11,21 @@ namespace
 std::vector<Setting> PresetSettings(const Options& o)
 {
   std::vector<Setting> settings;
+  // The pass's default (IsDefaultSetting): DIR, 5 steps, the exit's reflection followed.
+  // {"DIR", 5} alone is the paper's two-interface model.
+  Setting defaults{ "DIR", 5 };
+  defaults.ExitReflection = true;
   Setting antiAliased{ "DIR", 5 };
   antiAliased.AntiAliasing = true;
   Setting bounces{ "DIR", 5 };
   bounces.Bounces = 2;
-  Setting exitReflection{ "DIR", 5 };
-  exitReflection.ExitReflection = true;
+  const Setting exitReflection = defaults;
   Setting bouncesAndExit = bounces;
   bouncesAndExit.ExitReflection = true;
+  auto exitFollowed = [](Setting setting) {
+    setting.ExitReflection = true;
+    return setting;
+  };
   auto peel = [](int layers, int tirBounces) {
     Setting setting{ "PEEL", 0 };
     setting.Layers = layers;
@@ -33,24 +40,24 @@ std::vector<Setting> PresetSettings(const Options& o)
   coarse.Coarse = true;
   if (o.Quick)
   {
-    settings.push_back({ "DIR", 5 });
-    Setting point{ "DIR", 5 };
+    // The default, what each option changes from it, and the two-interface model.
+    settings.push_back(defaults);
+    Setting point = defaults;
     point.PointLookups = true; // what the filtered lookups gain
     settings.push_back(point);
-    settings.push_back(antiAliased);
-    settings.push_back(coarse);
+    settings.push_back(exitFollowed(antiAliased));
+    settings.push_back(exitFollowed(coarse));
     if (o.MultiSamples > 0)
     {
-      for (Setting pixelwise : { Setting{ "DIR", 5 }, antiAliased })
+      for (Setting pixelwise : { defaults, exitFollowed(antiAliased) })
       {
         pixelwise.PixelComposite = true;
         settings.push_back(pixelwise);
       }
     }
-    settings.push_back(bounces);
-    settings.push_back(exitReflection);
+    settings.push_back({ "DIR", 5 });
     settings.push_back(bouncesAndExit);
-    settings.push_back(smoothed({ "DIR", 5 }));
+    settings.push_back(smoothed(defaults));
     settings.push_back(smoothed(bouncesAndExit));
     settings.push_back({ "SIR", 0 });
     for (int layers : { 2, 4, 8 })

@@ -42,7 +42,8 @@ struct rfViewerOptions
   bool NoText = false;
   bool AntiAliasing = false;
   bool CoarseShading = false;
-  bool ExitReflection = false;
+  bool ExitReflection = false; // accepted for older scripts: on by default
+  bool NoExitReflection = false;
   bool SmoothInternalReflections = false;
   bool Masks = false;
   bool Help = false;

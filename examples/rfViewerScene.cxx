@@ -388,7 +388,7 @@ int BuildScene(const rfViewerOptions& o, const rfViewerSettings& s, Scene& scene
   scene.Pass->SetPeelCapture(s.PeelCapture);
   scene.Pass->SetAntiAliasing(o.AntiAliasing);
   scene.Pass->SetCoarseShading(o.CoarseShading);
-  scene.Pass->SetExitReflection(o.ExitReflection);
+  scene.Pass->SetExitReflection(!o.NoExitReflection);
   scene.Pass->SetSmoothInternalReflections(o.SmoothInternalReflections);
   scene.Renderer->SetPass(scene.Pass);
 
@@ -422,9 +422,9 @@ void SetStatus(Scene& scene, double milliseconds, int timeIndex)
   {
     line << "  coarse";
   }
-  if (scene.Pass->GetExitReflection() && scene.Pass->GetMethod() == vtkRefractionPass::DIR)
+  if (!scene.Pass->GetExitReflection() && scene.Pass->GetMethod() == vtkRefractionPass::DIR)
   {
-    line << "  exit reflection";
+    line << "  no exit reflection";
   }
   if (scene.Pass->GetSmoothInternalReflections() && !scene.Pass->GetAntiAliasing())
   {

@@ -271,15 +271,17 @@ public:
 
   ///@{
   /**
-   * DIR: follow the light the exit reflects back inside (off by default). With Fresnel, the
+   * DIR: follow the light the exit reflects back inside (on by default). With Fresnel, the
    * exit surface reflects part of the ray back into the glass (about 4 % at normal incidence
    * for IOR 1.5, more toward grazing); the two-interface model drops it. With this on, that
    * part is mirrored at the exit, its next interface estimated from the captured surfaces
    * without a search (one chord further, inside a sphere exact: every chord of a reflected
    * ray there is as long as the one before), refracted out there, and mixed in by its Fresnel
-   * share, as PEEL does at its first exit. On the benchmark's sphere at 512 px against the
-   * supersampled full reference 29.5 -> 33.3 dB, torus 28.4 -> 29.3, isosurface 19.9 -> 20.2,
-   * bunny 15.5 -> 15.6, for 5-9 % more than DIR's frame on llvmpipe. Without Fresnel, or
+   * share, as PEEL does at its first exit. On the benchmark's meshes at 512 px in VTK's
+   * default window, against the supersampled full reference (glass pixels, without -> with):
+   * sphere 31.1 -> 37.5 dB, torus 31.5 -> 32.8, isosurface 20.2 -> 20.4, bunny 15.8 -> 15.9,
+   * nested 11.5 -> 11.8, for 0 to 14 % more frame time on llvmpipe (1.29 -> 1.43 times plain
+   * VTK on the sphere; bench/results/cpu-llvmpipe-quick-msaa8-fill). Without Fresnel, or
    * with another method, nothing changes (PEEL follows it through its layers already).
    */
   vtkSetMacro(ExitReflection, bool);
@@ -644,7 +646,7 @@ protected:
   int DepthRangeMode = DEPTH_RANGE_REDUCTION;
   int TIRPolicy = TIR_CLAMP;
   int TIRBounces = 0;
-  bool ExitReflection = false;
+  bool ExitReflection = true;
   bool SmoothInternalReflections = false;
   int PeelLayers = 4;
   int PeelCapture = PEEL_CAPTURE_AUTO;

@@ -312,8 +312,8 @@ def case_properties(scene):
             lambda: setattr(view, "GlassAntiAliasing", 0))
     changes("GlassCoarseShading=1", lambda: setattr(view, "GlassCoarseShading", 1),
             lambda: setattr(view, "GlassCoarseShading", 0))
-    changes("GlassExitReflection=1", lambda: setattr(view, "GlassExitReflection", 1),
-            lambda: setattr(view, "GlassExitReflection", 0))
+    changes("GlassExitReflection=0", lambda: setattr(view, "GlassExitReflection", 0),
+            lambda: setattr(view, "GlassExitReflection", 1))
     changes("IndexOfRefraction=1.33", lambda: setattr(display, "IndexOfRefraction", 1.33),
             lambda: setattr(display, "IndexOfRefraction", 1.5))
     changes("GlassDispersion=0.05", lambda: setattr(display, "GlassDispersion", 0.05),

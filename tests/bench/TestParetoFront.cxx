@@ -34,10 +34,13 @@ rfbench::Row MakeRow(const std::string& mesh, const rfbench::Setting& setting, d
   return row;
 }
 
+// DIR 5 with the exit's reflection followed (the pass's default), with or without
+// anti-aliasing.
 rfbench::Setting Dir(bool antiAliasing)
 {
   rfbench::Setting s;
   s.Method = "DIR";
+  s.ExitReflection = true;
   s.AntiAliasing = antiAliasing;
   return s;
 }
@@ -70,8 +73,11 @@ int main(int argc, char* argv[])
   RF_REQUIRE(front == expected, "front of %zu points, expected 4, 0, 1, 5", front.size());
   RF_REQUIRE(rfbench::ParetoFront({}).empty(), "a front without points");
 
-  RF_REQUIRE(rfbench::IsDefaultSetting(Dir(false)), "DIR 5 is the default");
-  RF_REQUIRE(!rfbench::IsDefaultSetting(Dir(true)), "DIR 5 AA is not the default");
+  RF_REQUIRE(rfbench::IsDefaultSetting(Dir(false)), "DIR 5 exit is the default");
+  RF_REQUIRE(!rfbench::IsDefaultSetting(Dir(true)), "DIR 5 AA exit is not the default");
+  rfbench::Setting twoInterfaces = Dir(false);
+  twoInterfaces.ExitReflection = false;
+  RF_REQUIRE(!rfbench::IsDefaultSetting(twoInterfaces), "DIR 5 without exit is not the default");
   rfbench::Setting steps3 = Dir(false);
   steps3.Steps = 3;
   RF_REQUIRE(!rfbench::IsDefaultSetting(steps3), "DIR 3 is not the default");
@@ -90,25 +96,25 @@ int main(int argc, char* argv[])
   };
   rows[6].Ratio.Min = 1.7; // the default's repeats reach below the dominating row's slowest
   rows[7].Ratio.Max = 1.9;
-  rows[6].FullSS.PsnrRim = 18.0; // the cone's: DIR 5 AA as close on the rim too
+  rows[6].FullSS.PsnrRim = 18.0; // the cone's: DIR 5 AA exit as close on the rim too
   rows[7].FullSS.PsnrRim = 18.0;
   rows[8].FullSS.PsnrRim = 20.0; // the disc's: the default closer on the rim
   rows[9].FullSS.PsnrRim = 16.0;
   const std::string summary = rfbench::ParetoSummary(rows);
   std::printf("%s", summary.c_str());
-  RF_REQUIRE(summary.find("| ball | SIR 1.00x / 10.5 dB, DIR 5 AA 1.50x / 26.0 dB | dominated by "
-                          "DIR 5 AA 1.50x / 26.0 dB; with the rim's PSNR as a third axis, "
-                          "dominated by DIR 5 AA |") != std::string::npos,
+  RF_REQUIRE(summary.find("| ball | SIR 1.00x / 10.5 dB, DIR 5 AA exit 1.50x / 26.0 dB | dominated by "
+                          "DIR 5 AA exit 1.50x / 26.0 dB; with the rim's PSNR as a third axis, "
+                          "dominated by DIR 5 AA exit |") != std::string::npos,
     "the ball's line");
-  RF_REQUIRE(summary.find("| ring | DIR 5 2.00x / 20.0 dB, PEEL 0 10.00x / 26.0 dB | on the "
+  RF_REQUIRE(summary.find("| ring | DIR 5 exit 2.00x / 20.0 dB, PEEL 0 10.00x / 26.0 dB | on the "
                           "front; with the rim's PSNR as a third axis, on the front |") !=
       std::string::npos,
     "the ring's line");
-  RF_REQUIRE(summary.find("| cone | DIR 5 AA 1.80x / 20.9 dB | dominated by DIR 5 AA 1.80x / 20.9 "
+  RF_REQUIRE(summary.find("| cone | DIR 5 AA exit 1.80x / 20.9 dB | dominated by DIR 5 AA exit 1.80x / 20.9 "
                           "dB (the ratios' spreads overlap); with the rim's PSNR as a third "
-                          "axis, dominated by DIR 5 AA |") != std::string::npos,
+                          "axis, dominated by DIR 5 AA exit |") != std::string::npos,
     "the cone's line");
-  RF_REQUIRE(summary.find("| disc | DIR 5 AA 1.50x / 26.0 dB | dominated by DIR 5 AA 1.50x / "
+  RF_REQUIRE(summary.find("| disc | DIR 5 AA exit 1.50x / 26.0 dB | dominated by DIR 5 AA exit 1.50x / "
                           "26.0 dB; with the rim's PSNR as a third axis, on the front |") !=
       std::string::npos,
     "the disc's line");

@@ -69,6 +69,11 @@ int main()
   renderer->AddActor(glass);
   vtkNew<vtkRefractionPass> pass;
   pass->SetEnvironmentModeToBuiltin(); // structure behind the glass: the built-in sky
+  // The two interfaces only: the share the exit reflects back inside (SetExitReflection, on
+  // by default) crosses the ball again, into the bulging half, and rightly changes with it
+  // (27 % of the still side's pixels by more than 2 levels, measured), which is not the
+  // tint's drift this test looks for.
+  pass->ExitReflectionOff();
   renderer->SetPass(pass);
   auto window = rftest::MakeWindow(renderer, kSize, kSize);
   rftest::LookAtOrigin(renderer, 6.0, 0.0);

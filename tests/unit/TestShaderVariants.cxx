@@ -143,8 +143,8 @@ int main()
   window->AddRenderer(renderer);
 
   const std::vector<Variant> variants = {
-    { "defaults (DIR, clamp, Fresnel, secant, reduction)", [](vtkRefractionPass*) {}, false,
-      true },
+    { "defaults (DIR, clamp, Fresnel, exit reflection, secant, reduction)",
+      [](vtkRefractionPass*) {}, false, true },
     { "TIR reflect", [](vtkRefractionPass* p) { p->SetTIRPolicy(vtkRefractionPass::TIR_REFLECT); },
       true, true },
     { "Fresnel off", [](vtkRefractionPass* p) { p->FresnelOff(); }, true, true },
@@ -162,10 +162,9 @@ int main()
     // EGL frames show the same, before and after the kernel): a defect of the pass's scene
     // capture, not of the shader, which compiles (no error) and draws under X.
     { "SSP", [](vtkRefractionPass* p) { p->SetMethod(vtkRefractionPass::SSP); }, true, false },
-    { "exit reflection", [](vtkRefractionPass* p) { p->ExitReflectionOn(); }, true, true },
-    { "exit reflection, TIR followed twice, anti-aliasing",
+    { "exit reflection off", [](vtkRefractionPass* p) { p->ExitReflectionOff(); }, true, true },
+    { "TIR followed twice, anti-aliasing (with the exit's reflection)",
       [](vtkRefractionPass* p) {
-        p->ExitReflectionOn();
         p->SetTIRBounces(2);
         p->AntiAliasingOn();
       },
@@ -199,6 +198,7 @@ int main()
       [](vtkRefractionPass* p) {
         p->SetTIRPolicy(vtkRefractionPass::TIR_REFLECT);
         p->FresnelOff();
+        p->ExitReflectionOff();
         p->AdaptiveSearchOn();
         p->SecantRefinementOff();
         p->SetDepthRangeMode(vtkRefractionPass::DEPTH_RANGE_BOUNDS);

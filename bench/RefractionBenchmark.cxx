@@ -164,9 +164,18 @@ int main(int argc, char* argv[])
       options.Out = vtksys::SystemTools::GetFilenamePath(options.FromCsv);
       options.Out = options.Out.empty() ? "." : options.Out;
     }
+    // What the run recorded about itself (its settings, duration and the machine's load) is
+    // in the report it wrote, not in the CSV: a report remade in place keeps that line.
+    const std::string markdown = options.Out + "/results.md";
+    const char* const remade = " Its sections were remade from ";
+    std::string runLine = ReadRunLine(markdown);
+    runLine = runLine.substr(0, runLine.find(remade)); // once, however often it is remade
     if (!vtksys::SystemTools::MakeDirectory(options.Out) ||
-      !WriteMarkdown(options.Out + "/results.md", rows, recorded, "recorded run",
+      !WriteMarkdown(markdown, rows, recorded, "recorded run",
         "Remade from " + options.FromCsv + ".") ||
+      (!runLine.empty() &&
+        !ReplaceRunLine(markdown,
+          runLine + remade + options.FromCsv + " (--from-csv).")) ||
       !WritePareto(window, options.Out + "/pareto.png", rows))
     {
       std::fprintf(stderr, "cannot write results.md and pareto.png into %s\n",

@@ -22,6 +22,48 @@
 
 namespace rfbench
 {
+namespace
+{
+const char* const kRunLinePrefix = "Renderer: ";
+}
+
+std::string ReadRunLine(const std::string& path)
+{
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line))
+  {
+    if (line.rfind(kRunLinePrefix, 0) == 0)
+    {
+      return line;
+    }
+  }
+  return "";
+}
+
+bool ReplaceRunLine(const std::string& path, const std::string& runLine)
+{
+  std::vector<std::string> lines;
+  {
+    std::ifstream in(path);
+    std::string line;
+    while (std::getline(in, line))
+    {
+      lines.push_back(line.rfind(kRunLinePrefix, 0) == 0 ? runLine : line);
+    }
+    if (lines.empty())
+    {
+      return false;
+    }
+  }
+  std::ofstream out(path);
+  for (const std::string& line : lines)
+  {
+    out << line << "\n";
+  }
+  return static_cast<bool>(out);
+}
+
 std::string Db(double v)
 {
   char text[32];

@@ -20,6 +20,14 @@ std::string Db(double v);
 bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
   const std::string& renderer, const std::string& windowPath, const std::string& run);
 
+// The line of an existing results.md that describes its run ("Renderer: ...": the renderer,
+// the run's settings, how long it took, the machine's load), or "" where there is none.
+std::string ReadRunLine(const std::string& path);
+
+// Puts `runLine` in place of the run line of the results.md at `path` (a report remade from
+// its CSV keeps what the run itself recorded); false when the file cannot be rewritten.
+bool ReplaceRunLine(const std::string& path, const std::string& runLine);
+
 // Puts a chart view in the window in place of its renderers.
 void ShowChartView(vtkRenderWindow* window, vtkContextView* view);
 

@@ -169,13 +169,11 @@ int main(int argc, char* argv[])
     const std::string markdown = options.Out + "/results.md";
     const char* const remade = " Its sections were remade from ";
     std::string runLine = ReadRunLine(markdown);
-    runLine = runLine.substr(0, runLine.find(remade)); // once, however often it is remade
+    runLine = runLine.empty()
+      ? RunLine(recorded, "recorded run", "Remade from " + options.FromCsv + ".")
+      : runLine.substr(0, runLine.find(remade)) + remade + options.FromCsv + " (--from-csv).";
     if (!vtksys::SystemTools::MakeDirectory(options.Out) ||
-      !WriteMarkdown(markdown, rows, recorded, "recorded run",
-        "Remade from " + options.FromCsv + ".") ||
-      (!runLine.empty() &&
-        !ReplaceRunLine(markdown,
-          runLine + remade + options.FromCsv + " (--from-csv).")) ||
+      !WriteMarkdown(markdown, rows, runLine) ||
       !WritePareto(window, options.Out + "/pareto.png", rows))
     {
       std::fprintf(stderr, "cannot write results.md and pareto.png into %s\n",
@@ -466,7 +464,7 @@ int main(int argc, char* argv[])
       << "above the CPU count means other programs shared the cores and every time is "
       << "inflated by them; compare ratios, not milliseconds.";
   if (!WriteCsv(options.Out + "/results.csv", rows, rendererName) ||
-    !WriteMarkdown(options.Out + "/results.md", rows, rendererName, windowPath, run.str()) ||
+    !WriteMarkdown(options.Out + "/results.md", rows, RunLine(rendererName, windowPath, run.str())) ||
     !WritePareto(window, options.Out + "/pareto.png", rows))
   {
     std::fprintf(stderr, "cannot write the results into %s\n", options.Out.c_str());

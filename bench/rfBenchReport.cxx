@@ -27,6 +27,12 @@ namespace
 const char* const kRunLinePrefix = "Renderer: ";
 }
 
+std::string RunLine(
+  const std::string& renderer, const std::string& windowPath, const std::string& run)
+{
+  return kRunLinePrefix + renderer + " (" + windowPath + "). " + run;
+}
+
 std::string ReadRunLine(const std::string& path)
 {
   std::ifstream in(path);
@@ -41,29 +47,6 @@ std::string ReadRunLine(const std::string& path)
   return "";
 }
 
-bool ReplaceRunLine(const std::string& path, const std::string& runLine)
-{
-  std::vector<std::string> lines;
-  {
-    std::ifstream in(path);
-    std::string line;
-    while (std::getline(in, line))
-    {
-      lines.push_back(line.rfind(kRunLinePrefix, 0) == 0 ? runLine : line);
-    }
-    if (lines.empty())
-    {
-      return false;
-    }
-  }
-  std::ofstream out(path);
-  for (const std::string& line : lines)
-  {
-    out << line << "\n";
-  }
-  return static_cast<bool>(out);
-}
-
 std::string Db(double v)
 {
   char text[32];
@@ -71,13 +54,12 @@ std::string Db(double v)
   return text;
 }
 
-bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
-  const std::string& renderer, const std::string& windowPath, const std::string& run)
+bool WriteMarkdown(
+  const std::string& path, const std::vector<Row>& rows, const std::string& runLine)
 {
   std::ofstream f(path);
   char line[1024];
-  f << "# Error against run time\n\nRenderer: " << renderer << " (" << windowPath << "). "
-    << run << "\n\n"
+  f << "# Error against run time\n\n" << runLine << "\n\n"
     << "How to read it. Every row (a setting on a mesh at a size) was timed together with a "
        "plain VTK render of the same mesh right after it, repeated in one shuffled order; "
        "`ms` and `ratio` (glass frame time over that plain render) are medians over the "

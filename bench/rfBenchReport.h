@@ -16,17 +16,18 @@ namespace rfbench
 // A PSNR in dB with one decimal, or "-" where there is none (negative).
 std::string Db(double v);
 
-// Writes results.md; `run` describes the run (environment, repeats, load).
-bool WriteMarkdown(const std::string& path, const std::vector<Row>& rows,
+// The line of results.md that describes its run: the renderer, its window, and `run` (the
+// environment, repeats, duration, the machine's load).
+std::string RunLine(
   const std::string& renderer, const std::string& windowPath, const std::string& run);
 
-// The line of an existing results.md that describes its run ("Renderer: ...": the renderer,
-// the run's settings, how long it took, the machine's load), or "" where there is none.
+// The run line of an existing results.md (RunLine), or "" where there is none: a report
+// remade from its CSV keeps what the run itself recorded.
 std::string ReadRunLine(const std::string& path);
 
-// Puts `runLine` in place of the run line of the results.md at `path` (a report remade from
-// its CSV keeps what the run itself recorded); false when the file cannot be rewritten.
-bool ReplaceRunLine(const std::string& path, const std::string& runLine);
+// Writes results.md, its run described by `runLine` (RunLine).
+bool WriteMarkdown(
+  const std::string& path, const std::vector<Row>& rows, const std::string& runLine);
 
 // Puts a chart view in the window in place of its renderers.
 void ShowChartView(vtkRenderWindow* window, vtkContextView* view);

@@ -19,13 +19,11 @@ std::vector<Setting> PresetSettings(const Options& o)
   antiAliased.AntiAliasing = true;
   Setting bounces{ "DIR", 5 };
   bounces.Bounces = 2;
-  const Setting exitReflection = defaults;
-  Setting bouncesAndExit = bounces;
-  bouncesAndExit.ExitReflection = true;
   auto exitFollowed = [](Setting setting) {
     setting.ExitReflection = true;
     return setting;
   };
+  const Setting bouncesAndExit = exitFollowed(bounces);
   auto peel = [](int layers, int tirBounces) {
     Setting setting{ "PEEL", 0 };
     setting.Layers = layers;
@@ -90,7 +88,7 @@ std::vector<Setting> PresetSettings(const Options& o)
   settings.push_back(antiAliased);
   settings.push_back(coarse);
   settings.push_back(bounces);
-  settings.push_back(exitReflection);
+  settings.push_back(defaults);
   settings.push_back(bouncesAndExit);
   settings.push_back(smoothed({ "DIR", 5 }));
   settings.push_back(smoothed(bouncesAndExit));

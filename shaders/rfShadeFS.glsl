@@ -411,7 +411,8 @@ rfRay rfTraceRay(vec2 tc, vec3 N1, float depth, int material, int channel)
     if (tir == 0)
     {
       vec3 outward = normalize(N2);
-      branchWeight = rfk_fresnel_dielectric(dot(inside, outward), ior);
+      float cosExit = dot(inside, outward);
+      branchWeight = rfk_fresnel_dielectric(cosExit, ior);
       vec3 mirrored = reflect(inside, outward);
       vec3 nextP;
       vec3 nextN;
@@ -419,7 +420,8 @@ rfRay rfTraceRay(vec2 tc, vec3 N1, float depth, int material, int channel)
       if (branchWeight > 0.0 && found)
       {
         branchP = nextP;
-        rfRefractWithPolicy(mirrored, -normalize(nextN), ior, branchT);
+        rfRefractWithPolicy(
+          mirrored, -rfChordSymmetricNormal(mirrored, nextN, cosExit), ior, branchT);
       }
       else
       {

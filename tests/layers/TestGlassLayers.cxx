@@ -31,6 +31,7 @@
 #include "rf_metrics.h"
 
 #include "rfReferenceScene.h"
+#include "rfTestBaseline.h"
 #include "rfTestRig.h"
 #include "rfTestScene.h"
 #include "rf_require.h"
@@ -46,10 +47,8 @@
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkRegressionTestImage.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
-#include <vtkTesting.h>
 
 #include <algorithm>
 #include <cmath>
@@ -134,10 +133,7 @@ int Regression(int argc, char* argv[], vtkRenderWindow* window)
   {
     return EXIT_SUCCESS; // run without a baseline: the assertions alone
   }
-  window->Render();
-  return vtkRegressionTestImageThreshold(window, kRegressionThreshold) == vtkTesting::FAILED
-    ? EXIT_FAILURE
-    : EXIT_SUCCESS;
+  return rftest::CompareWithBaseline(argc, argv, window, kRegressionThreshold);
 }
 
 int Overlapping(int argc, char* argv[])

@@ -1,12 +1,11 @@
 // VTK regression-image tests of the glass: TestGlassScenes CASE -V baseline.png -T outdir
 // Each case also asserts what the picture must show (a test that cannot fail is a defect).
+#include "rfTestBaseline.h"
 #include "rfTestIsosurface.h"
 #include "rfTestScene.h"
 #include "vtkISRDistanceFilter.h"
 #include "vtkMetaballsSource.h"
 
-#include <vtkRegressionTestImage.h>
-#include <vtkTesting.h>
 
 #include <cstdlib>
 #include <cstring>
@@ -21,9 +20,7 @@ constexpr int kSize = 160;
 
 int Finish(int argc, char* argv[], vtkRenderWindow* window)
 {
-  window->Render();
-  const int result = vtkRegressionTestImageThreshold(window, kThreshold);
-  return result == vtkTesting::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+  return rftest::CompareWithBaseline(argc, argv, window, kThreshold);
 }
 
 int SphereCase(int argc, char* argv[], bool sir)

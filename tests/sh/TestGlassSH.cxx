@@ -15,6 +15,7 @@
 #include "rf_metrics.h"
 
 #include "rfReferenceScene.h"
+#include "rfTestBaseline.h"
 #include "rfTestRig.h"
 #include "rfTestScene.h"
 #include "rf_require.h"
@@ -30,11 +31,9 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkPolyDataNormals.h>
-#include <vtkRegressionTestImage.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSphereSource.h>
-#include <vtkTesting.h>
 
 #include <cmath>
 #include <cstdio>
@@ -90,10 +89,7 @@ int SphereExit(int argc, char* argv[], bool regression)
     "the pass reported messages on a fitting transfer");
   if (regression)
   {
-    scene.Window->Render();
-    return vtkRegressionTestImageThreshold(scene.Window, 0.15) == vtkTesting::FAILED
-      ? EXIT_FAILURE
-      : EXIT_SUCCESS;
+    return rftest::CompareWithBaseline(argc, argv, scene.Window, 0.15);
   }
   scene.Pass->DebugOutputOn();
   scene.Render();

@@ -301,7 +301,11 @@ int main(int argc, char* argv[])
         (options.Convergence &&
           !Trace(renderer, pass, size, vtkRefractionReference::FULL, 2 * ss,
             where + "full " + std::to_string(2 * ss) + "x" + std::to_string(2 * ss),
-            truth.FullDoubleSS)))
+            truth.FullDoubleSS)) ||
+        (ss / 2 >= 2 &&
+          !Trace(renderer, pass, size, vtkRefractionReference::FULL, ss / 2,
+            where + "full " + std::to_string(ss / 2) + "x" + std::to_string(ss / 2),
+            truth.FullHalfSS)))
       {
         std::fprintf(stderr, "%s: the reference could not trace the scene; skipped\n",
           scene.Name.c_str());
@@ -317,6 +321,7 @@ int main(int argc, char* argv[])
         row.RefTwoMs = truth.Two.Seconds * 1e3;
         row.RefFullMs = truth.Full.Seconds * 1e3;
         row.RefFullSSMs = truth.FullSS.Seconds * 1e3;
+        row.FewRaysSide = truth.FullHalfSS.Colour.empty() ? 0 : ss / 2;
         if (setting.Method != "none")
         {
           Apply(pass, setting);

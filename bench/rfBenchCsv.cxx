@@ -109,7 +109,7 @@ std::vector<Column> Columns(int stageCount)
   number("bytes_per_pixel", [](Row& r) -> double& { return r.BytesPerPixel; });
   const std::pair<const char*, Errors Row::*> references[] = { { "two", &Row::Two },
     { "full", &Row::Full }, { "two_ss", &Row::TwoSS }, { "full_ss", &Row::FullSS },
-    { "one_ray_full_ss", &Row::OneRay } };
+    { "one_ray_full_ss", &Row::OneRay }, { "few_rays_full_ss", &Row::FewRays } };
   for (const auto& ref : references)
   {
     const std::string suffix = ref.first;
@@ -124,7 +124,11 @@ std::vector<Column> Columns(int stageCount)
   }
   number("psnr_model_full_ss", [](Row& r) -> double& { return r.PsnrModelFullSS; });
   number("brightness_full_ss", [](Row& r) -> double& { return r.BrightnessFullSS; });
+  c.push_back({ "few_rays_side", [](const Row& r) { return std::to_string(r.FewRaysSide); },
+    [](Row& r, const std::string& v) { r.FewRaysSide = std::atoi(v.c_str()); } });
   number("ref_ss_convergence_psnr", [](Row& r) -> double& { return r.PsnrSSConvergence; });
+  number("ref_ss_convergence_psnr_rim", [](Row& r) -> double& { return r.PsnrSSConvergenceRim; });
+  number("ref_ss_convergence_psnr_tir", [](Row& r) -> double& { return r.PsnrSSConvergenceTir; });
   number("t2_deg_mean", [](Row& r) -> double& { return r.AngMean; });
   number("t2_deg_p95", [](Row& r) -> double& { return r.AngP95; });
   number("t2_deg_max", [](Row& r) -> double& { return r.AngMax; });

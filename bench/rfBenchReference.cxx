@@ -198,12 +198,27 @@ void Measure(Row& row, const std::vector<float>& colour, const std::vector<float
   row.BrightnessFullSS = truthMean > 0.0 ? MaskedMean(colour, mask) / truthMean : -1.0;
   if (!truth.FullDoubleSS.Colour.empty())
   {
-    rf_psnr(truth.FullSS.Colour.data(), truth.FullDoubleSS.Colour.data(), n, 3, two.Hit.data(),
-      &row.PsnrSSConvergence);
+    // On the glass the truth sees, whatever the pass draws: its rim and its TIR pixels too.
+    std::vector<unsigned char> truthRim(n, 0);
+    std::vector<unsigned char> truthTir(n, 0);
+    for (size_t i = 0; i < n; ++i)
+    {
+      truthRim[i] = two.Hit[i] && i < coverage.size() && coverage[i] > 0.0f && coverage[i] < 1.0f;
+      truthTir[i] = two.Hit[i] && two.Tir[i];
+    }
+    const float* single = truth.FullSS.Colour.data();
+    const float* doubled = truth.FullDoubleSS.Colour.data();
+    rf_psnr(single, doubled, n, 3, two.Hit.data(), &row.PsnrSSConvergence);
+    rf_psnr(single, doubled, n, 3, truthRim.data(), &row.PsnrSSConvergenceRim);
+    rf_psnr(single, doubled, n, 3, truthTir.data(), &row.PsnrSSConvergenceTir);
   }
   rf_psnr(truth.TwoSS.Colour.data(), truth.FullSS.Colour.data(), n, 3, mask.data(),
     &row.PsnrModelFullSS);
   row.OneRay = Compare(truth.Full.Colour, truth.FullSS, m, size);
+  if (!truth.FullHalfSS.Colour.empty())
+  {
+    row.FewRays = Compare(truth.FullHalfSS.Colour, truth.FullSS, m, size);
+  }
   rf_error_stats angle{};
   if (rf_angular_error(t2.data(), two.T2.data(), n, mask.data(), &angle) == RF_OK)
   {

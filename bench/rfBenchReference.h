@@ -28,6 +28,9 @@ struct Truth
 {
   Reference Two, Full, TwoSS, FullSS;
   Reference FullDoubleSS; // traced with --convergence only: twice FullSS's samples per side
+  // Half FullSS's samples per side (traced where that is 2 or more): what a method that follows
+  // every path exactly at a few samples a pixel, as a multisampled window's, would read.
+  Reference FullHalfSS;
   // The renderer's background is one colour: the supersampled references' sub-samples that
   // miss the glass take it (rf_trace_options.background), so a picture's whole silhouette can
   // be held against them (Errors::PsnrEdge).

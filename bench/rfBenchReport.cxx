@@ -93,23 +93,26 @@ bool WriteMarkdown(
         "the stage; -1 marks a stage the method does not run. `B/px` is "
         "vtkRefractionPass::GetTextureBytes() over the pixels.\n\n";
   // How converged the truth is (--convergence): one figure per mesh and size.
-  std::map<std::pair<std::string, int>, double> convergence;
+  std::map<std::pair<std::string, int>, const Row*> convergence;
   for (const Row& r : rows)
   {
     if (r.PsnrSSConvergence > 0.0)
-      convergence[{ r.Mesh, r.Size }] = r.PsnrSSConvergence;
+      convergence[{ r.Mesh, r.Size }] = &r;
   }
   if (!convergence.empty())
   {
     f << "## The truth's convergence\n\n`full SS` against the full reference traced at twice its "
-         "rays per pixel side, on the glass the reference sees (PSNR; 40 dB or more: the "
-         "figures above measure the method, not the truth's own noise).\n\n"
-         "| mesh | size | PSNR |\n|---|---|---|\n";
+         "rays per pixel side, on the glass the reference sees, on its rim (the pixels `full "
+         "SS` covers in part) and on its TIR pixels (PSNR; 40 dB or more: the figures above "
+         "measure the method, not the truth's own noise; a part that reads less bounds what "
+         "any method can be shown to reach there).\n\n"
+         "| mesh | size | glass | rim | TIR |\n|---|---|---|---|---|\n";
     for (const auto& entry : convergence)
     {
-      std::snprintf(line, sizeof(line), "| %s | %d | %.1f dB |\n", entry.first.first.c_str(),
-        entry.first.second, entry.second);
-      f << line;
+      const Row& r = *entry.second;
+      f << "| " << entry.first.first << " | " << entry.first.second << " | "
+        << Db(r.PsnrSSConvergence) << " dB | " << Db(r.PsnrSSConvergenceRim) << " | "
+        << Db(r.PsnrSSConvergenceTir) << " |\n";
     }
     f << "\n";
   }
@@ -123,20 +126,39 @@ bool WriteMarkdown(
   }
   if (!oneRay.empty())
   {
+    int few = 0;
+    for (const auto& entry : oneRay)
+      few = std::max(few, entry.second->FewRaysSide);
     f << "## One ray per pixel, traced exactly\n\nThe full reference at one ray through each "
          "pixel's centre against `full SS`, on the default setting's glass pixels and their "
          "parts (PSNR): what sampling a pixel once costs whatever the refraction does. A "
          "method that samples a pixel once and follows the path exactly reads this; one that "
          "filters or samples more can read better; where a row reads near it, the error left "
-         "is sampling, not missing interfaces or bounces.\n\n"
-         "| mesh | size | glass | rim | TIR | rest |\n|---|---|---|---|---|---|\n";
+         "is sampling, not missing interfaces or bounces.";
+    if (few > 0)
+    {
+      f << " `" << few << "x" << few << "`: the same at " << few << " x " << few
+        << " rays per pixel (what following every path exactly at a multisampled window's "
+           "few samples a pixel would read; the window's own sample positions differ).";
+    }
+    f << "\n\n| mesh | size | glass | rim | TIR | rest |"
+      << (few > 0 ? " glass (" + std::to_string(few) + "x" + std::to_string(few) + ") | rim (" +
+              std::to_string(few) + "x" + std::to_string(few) + ") |"
+                  : std::string())
+      << "\n|---|---|---|---|---|---|" << (few > 0 ? "---|---|" : "") << "\n";
     for (const auto& entry : oneRay)
     {
       const Errors& e = entry.second->OneRay;
-      std::snprintf(line, sizeof(line), "| %s | %d | %s | %s | %s | %s |\n",
+      std::snprintf(line, sizeof(line), "| %s | %d | %s | %s | %s | %s |",
         entry.first.first.c_str(), entry.first.second, Db(e.Psnr).c_str(),
         Db(e.PsnrRim).c_str(), Db(e.PsnrTir).c_str(), Db(e.PsnrRest).c_str());
       f << line;
+      if (few > 0)
+      {
+        const Errors& fewRays = entry.second->FewRays;
+        f << " " << Db(fewRays.Psnr) << " | " << Db(fewRays.PsnrRim) << " |";
+      }
+      f << "\n";
     }
     f << "\n";
   }

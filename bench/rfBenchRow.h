@@ -48,12 +48,18 @@ struct Row
   // whatever the refraction does (a method that filters may read better; one that samples a
   // pixel once and follows the path exactly reads this).
   Errors OneRay;
+  // The same at half `full SS`'s rays per pixel side (FewRaysSide, 2 or more; -1 and 0 where
+  // the truth has fewer than 4 x 4).
+  Errors FewRays;
+  int FewRaysSide = 0;
   // Mean colour of the picture over the supersampled full reference's, on the glass pixels:
   // light lost or gained (1 is as bright as the truth).
   double BrightnessFullSS = -1;
   // The supersampled full reference against the same traced at twice the samples per side, on
-  // the glass the reference sees (--convergence; -1 without): how converged the truth is.
-  double PsnrSSConvergence = -1;
+  // the glass the reference sees (--convergence; -1 without): how converged the truth is; and
+  // on its parts: the rim (the pixels the truth's sub-samples cover in part) and the pixels
+  // whose two-interface ray is totally reflected at the exit (-1: none).
+  double PsnrSSConvergence = -1, PsnrSSConvergenceRim = -1, PsnrSSConvergenceTir = -1;
   double AngMean = 0, AngP95 = 0, AngMax = 0, P2Mean = 0, P2Max = 0, TirShare = 0,
          RefTirShare = 0;
   long Pixels = 0, TirPixels = 0;

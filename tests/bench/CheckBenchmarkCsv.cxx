@@ -3,8 +3,10 @@
 // its median inside its min/max; the supersampled reference in its own columns, and DIR's
 // error against it larger than against the one-sample reference (both share the aliasing
 // that the supersampled truth does not have); on the silhouette's pixels (rim) DIR's error
-// larger than over the whole glass, and the glass as bright as the truth within 3%.
-//   CheckBenchmarkCsv results.csv MIN_DIR_SPHERE_PSNR
+// larger than over the whole glass, and the glass as bright as the truth within 3%. With
+// `convergence` (a run with --convergence): the truth's convergence on every measured row, its
+// rim's below its whole glass's.
+//   CheckBenchmarkCsv results.csv MIN_DIR_SPHERE_PSNR [convergence]
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -82,6 +84,9 @@ int main(int argc, char* argv[])
   int rows = 0;
   int failures = 0;
   int sawDir = 0;
+  int sawConvergence = 0;
+  const int convergence = column("ref_ss_convergence_psnr");
+  const int convergenceRim = column("ref_ss_convergence_psnr_rim");
   while (std::getline(in, line))
   {
     const auto f = Fields(line);
@@ -113,6 +118,21 @@ int main(int argc, char* argv[])
       std::fprintf(stderr, "row %d: fewer than 3 repeats, or the median ratio %g outside "
                            "[%s, %s]\n", rows, r, f[ratioMin].c_str(), f[ratioMax].c_str());
       ++failures;
+    }
+    // With --convergence, the truth's convergence on its rim too: every glass has a rim, and
+    // the rim is where the truth converges last (a figure above the whole glass's, or none,
+    // means the rim mask found no pixels or the wrong ones).
+    if (convergence >= 0 && std::atof(f[convergence].c_str()) > 0.0)
+    {
+      const double whole = std::atof(f[convergence].c_str());
+      const double rimConvergence = convergenceRim >= 0 ? std::atof(f[convergenceRim].c_str()) : -1;
+      if (!(rimConvergence > 0.0 && rimConvergence < whole))
+      {
+        std::fprintf(stderr, "row %d: the truth's convergence on the rim (%g dB) is missing or "
+                             "not below the whole glass's (%g dB)\n", rows, rimConvergence, whole);
+        ++failures;
+      }
+      ++sawConvergence;
     }
     if (f[mesh] == "sphere" && f[method] == "DIR" && f[steps] == "5" && f[range] == "reduction" &&
       f[adaptive] == "0" && f[back] == "furthest" && f[secant] == "1")
@@ -164,6 +184,12 @@ int main(int argc, char* argv[])
     std::fprintf(stderr, "expected one DIR (5 steps, default settings) sphere row, found %d\n", sawDir);
     ++failures;
   }
-  std::printf("%d rows checked, %d problems\n", rows, failures);
+  if (argc > 3 && std::string(argv[3]) == "convergence" && sawConvergence == 0)
+  {
+    std::fprintf(stderr, "no row holds the truth's convergence\n");
+    ++failures;
+  }
+  std::printf("%d rows checked (%d with the truth's convergence), %d problems\n", rows,
+    sawConvergence, failures);
   return failures == 0 && rows > 0 ? 0 : 1;
 }

@@ -1,9 +1,10 @@
 #include "rfTestBaseline.h"
 
+#include "rfTestPNG.h"
+
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
-#include <vtkPNGWriter.h>
 #include <vtkRegressionTestImage.h>
 #include <vtkSmartPointer.h>
 #include <vtkTesting.h>
@@ -141,13 +142,8 @@ int CompareWithBaseline(int argc, char* argv[], vtkRenderWindow* window, double 
   const char* directory = testing->GetTempDirectory();
   if (directory)
   {
-    const std::string written = std::string(directory) + "/" +
-      vtksys::SystemTools::GetFilenameName(baseline);
-    vtkNew<vtkPNGWriter> writer;
-    writer->SetInputData(picture);
-    writer->SetFileName(written.c_str());
-    writer->Write();
-    std::fprintf(stderr, "the picture: %s\n", written.c_str());
+    WritePNG(picture, std::string(directory) + "/" +
+      vtksys::SystemTools::GetFilenameName(baseline));
   }
   return EXIT_FAILURE;
 }

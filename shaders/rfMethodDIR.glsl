@@ -79,25 +79,6 @@ bool rfInsideAt(vec3 Q, out vec2 tc, out float toFront, out float toBack, out ve
 #endif
 
 #ifdef RF_EXIT_REFLECTION
-// The outward normal at a reflected chord's next interface, turned in the plane of the chord
-// and the captured normal (estimated) until it meets the chord at cosExit, the cosine at the
-// interface the chord began from: inside a sphere both ends of a chord meet the surface at one
-// angle. One chord on, the captured normal is a texel's, and near the silhouette a texel turns
-// it by many degrees: enough to reflect totally (and look inwards) a chord the sphere lets out,
-// which speckled the pictures along the rings where the next interface changes from the back
-// to the front. Only the captured normal's plane is kept.
-vec3 rfChordSymmetricNormal(vec3 chord, vec3 estimated, float cosExit)
-{
-  vec3 across = estimated - dot(estimated, chord) * chord;
-  float acrossLength = length(across);
-  if (!(acrossLength > 1e-4))
-  {
-    return chord;
-  }
-  float sinExit = sqrt(max(1.0 - cosExit * cosExit, 0.0));
-  return cosExit * chord + (sinExit / acrossLength) * across;
-}
-
 // The share an exit reflects back inside, its next interface estimated without a search: one
 // chord on (inside a sphere every chord of a reflected ray has the length of the one before),
 // then onto the depth of whichever captured surface is nearer there, whose normal it leaves

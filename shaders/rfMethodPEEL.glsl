@@ -132,7 +132,8 @@ bool rfPeelMaterialSheet(int material)
 // The share the first refracting interface reflects (Fresnel), from where it turns back to
 // where it leaves, estimated without a search as DIR's exit reflection does (rfReflectedExit):
 // one chord on (inside a sphere every chord of a reflected ray is as long as the one before),
-// moved onto the depth of the layer nearest there, refracted out through that layer's normal.
+// moved onto the depth of the layer nearest there, refracted out through that layer's normal
+// (turned as rfk_chord_symmetric_normal says where that layer is the glass the split left).
 // Marched through the layers like the main ray, it took about 40 % of PEEL's shading on
 // llvmpipe. False where the estimate leaves the image or finds no layer.
 bool rfPeelReflectedExit(rfk_peel_ray branch, int channel, out vec3 exitP, out vec3 exitT)
@@ -185,6 +186,13 @@ bool rfPeelReflectedExit(rfk_peel_ray branch, int channel, out vec3 exitP, out v
   if (rfPeelMaterialSheet(crossed))
   {
     return true;
+  }
+  int inside = rfk_peel_stack_top(branch.stack);
+  if (branch.splitCos > 0.0 && crossed == inside)
+  {
+    // Back to the glass it turned from: a layer's normal one chord on, near the rim, reflected
+    // totally and speckled as DIR's did; the chord meets it at the angle it met the exit.
+    outward = rfk_chord_symmetric_normal(branch.T, outward, branch.splitCos);
   }
   int beyond = rfk_peel_stack_pop(branch.stack);
   float eta = rfk_peel_medium_ior(channel, branch.stack) / rfk_peel_medium_ior(channel, beyond);

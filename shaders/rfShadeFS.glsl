@@ -421,7 +421,7 @@ rfRay rfTraceRay(vec2 tc, vec3 N1, float depth, int material, int channel)
       {
         branchP = nextP;
         rfRefractWithPolicy(
-          mirrored, -rfChordSymmetricNormal(mirrored, nextN, cosExit), ior, branchT);
+          mirrored, -rfk_chord_symmetric_normal(mirrored, nextN, cosExit), ior, branchT);
       }
       else
       {

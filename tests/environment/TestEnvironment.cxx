@@ -128,6 +128,7 @@ int MethodFromName(const std::string& name)
     : name == "isr"    ? vtkRefractionPass::ISR
     : name == "ssp"    ? vtkRefractionPass::SSP
     : name == "dir"    ? vtkRefractionPass::DIR
+    : name == "peel"   ? vtkRefractionPass::PEEL
                        : -1;
 }
 

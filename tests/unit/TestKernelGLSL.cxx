@@ -269,7 +269,8 @@ int main(int argc, char* argv[])
       // The cases must reach the branches they are about: TIR and refraction alike, searches
       // that move off the entry point on a good share of the sphere.
       const bool branchCase = testCase == RFT_TEST_REFRACT_REFLECT ||
-        testCase == RFT_TEST_REFRACT_CLAMP || testCase >= RFT_TEST_SEARCH_FIRST;
+        testCase == RFT_TEST_REFRACT_CLAMP ||
+        (testCase >= RFT_TEST_SEARCH_FIRST && testCase <= RFT_TEST_SEARCH_LAST);
       if (branchCase && !(flagged > pixelCount / 20 && flagged < pixelCount))
       {
         std::cerr << "  " << rft_case_name(testCase) << ": only " << flagged

@@ -70,7 +70,8 @@ int rft_make_scene(int width, int height, float* depth, rft_scene* scene)
 #if RFT_TEST_REFRACT_REFLECT != RFT_CASE_REFRACT_REFLECT ||                                      \
   RFT_TEST_REFRACT_CLAMP != RFT_CASE_REFRACT_CLAMP ||                                              \
   RFT_TEST_SEARCH_FIRST != RFT_CASE_SEARCH_PAPER ||                                                \
-  RFT_CASE_SH_BASIS != RFT_CASE_COUNT - 1
+  RFT_TEST_SEARCH_LAST != RFT_CASE_SEARCH_TOWARD_CAMERA ||                                         \
+  RFT_CASE_CHORD_NORMAL != RFT_CASE_COUNT - 1
 #error "kernel_glsl_reference.h and rf_kernel_cases.h number the cases differently"
 #endif
 
@@ -88,7 +89,7 @@ const char* rft_case_name(int test_case)
     "DIR search, paper (5 steps)",
     "DIR search, defaults (8 adaptive + secant)",
     "DIR search, IOR 3 (5 steps + secant)", "DIR search, toward the camera",
-    "spherical harmonics (orders 8, 5, 2)" };
+    "spherical harmonics (orders 8, 5, 2)", "chord-symmetric normal" };
   return test_case >= 0 && test_case < RFT_CASE_COUNT ? names[test_case] : "unknown";
 }
 

@@ -23,10 +23,11 @@ typedef struct rft_scene
 int rft_make_scene(int width, int height, float* depth, rft_scene* scene);
 
 /* Cases whose fourth value flags the branch under test (TIR; a search that moved): the two
- * refractions, and the searches from RFT_TEST_SEARCH_FIRST to the last case. */
+ * refractions, and the searches from RFT_TEST_SEARCH_FIRST to RFT_TEST_SEARCH_LAST. */
 #define RFT_TEST_REFRACT_REFLECT 0
 #define RFT_TEST_REFRACT_CLAMP 1
 #define RFT_TEST_SEARCH_FIRST 10
+#define RFT_TEST_SEARCH_LAST 13
 
 int rft_case_count(void);
 const char* rft_case_name(int test_case);

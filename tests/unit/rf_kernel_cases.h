@@ -31,7 +31,8 @@
 #define RFT_CASE_SEARCH_STRONG 12
 #define RFT_CASE_SEARCH_TOWARD_CAMERA 13
 #define RFT_CASE_SH_BASIS 14
-#define RFT_CASE_COUNT 15
+#define RFT_CASE_CHORD_NORMAL 15
+#define RFT_CASE_COUNT 16
 
 /* The glass sphere of the search cases, in view space. */
 #define RFT_SPHERE_Z -5.0
@@ -216,6 +217,12 @@ RF_KERNEL rf_float4 rft_evaluate(int testCase, rf_float2 pixel, rf_float2 size, 
     rf_float3 d = rft_sphere_direction(pixel, size);
     return rf_make4(rfk_sh_basis(8, -5, d), rfk_sh_basis(8, 3, d), rfk_sh_basis(5, 0, d),
       rfk_sh_basis(2, -1, d));
+  }
+  if (testCase == RFT_CASE_CHORD_NORMAL)
+  {
+    rf_float3 n = rfk_chord_symmetric_normal(
+      rft_sphere_direction(pixel, size), rft_normal(pixel, size), 1.2 * u.x - 0.1);
+    return rf_make4(n.x, n.y, n.z, 0.0);
   }
   if (testCase == RFT_CASE_FRUSTUM_EXIT)
   {

@@ -1,6 +1,7 @@
 /* Unit tests of rf_optics against closed forms computed here by hand. */
 #include "rf_optics.h"
 
+#include "rf_kernel_optics.h"
 #include "rf_test.h"
 
 #include <math.h>
@@ -268,6 +269,56 @@ static void test_schlick(void)
   CHECK(isnan(rf_fresnel_dielectric(NAN, 1.5)));
 }
 
+/* Inside a sphere a reflected chord meets its far end at the angle it left its near end:
+ * from an estimate of the far end's normal turned within the plane of the chord (as a
+ * texel's normal near the rim is), the chord-symmetric normal is the sphere's, exactly. */
+static void test_chord_symmetric_normal_in_a_sphere(void)
+{
+  const rf_vec3 centre = { 0.3, -0.2, -5.0 };
+  const double radius = 1.6;
+  int i;
+  for (i = 0; i < 40; ++i)
+  {
+    /* A point on the sphere and a direction inside at angle theta to its inward normal. */
+    const double phi = 0.37 * i;
+    const double theta = (0.5 + 88.0 * i / 39.0) * DEG;
+    const rf_vec3 n1 = rf_vec3_make(cos(phi) * 0.8, sin(phi) * 0.8, 0.6);
+    const rf_vec3 p1 = rf_vec3_add(centre, rf_vec3_scale(n1, radius));
+    const rf_vec3 side = rf_vec3_normalize(rf_vec3_cross(n1, rf_vec3_make(0.0, 0.0, 1.0)));
+    const rf_vec3 chord = rf_vec3_normalize(
+      rf_vec3_add(rf_vec3_scale(n1, -cos(theta)), rf_vec3_scale(side, sin(theta))));
+    const double cos_exit = -rf_vec3_dot(chord, n1);
+    /* The chord's far end: t = -2 dot(p1 - c, chord). */
+    const double t = -2.0 * rf_vec3_dot(rf_vec3_sub(p1, centre), chord);
+    const rf_vec3 p2 = rf_vec3_add(p1, rf_vec3_scale(chord, t));
+    const rf_vec3 n2 = rf_vec3_scale(rf_vec3_sub(p2, centre), 1.0 / radius);
+    /* The estimate: the true normal turned toward or away from the chord by up to 25 degrees
+     * (less than the chord's angle, so it stays on its side of the chord). */
+    const double turn = (i % 2 ? 1.0 : -1.0) * fmin(25.0 * DEG, 0.9 * theta) * (i % 5) / 4.0;
+    const rf_vec3 along = rf_vec3_normalize(
+      rf_vec3_sub(chord, rf_vec3_scale(n2, rf_vec3_dot(chord, n2))));
+    const rf_vec3 estimated =
+      rf_vec3_add(rf_vec3_scale(n2, cos(turn)), rf_vec3_scale(along, sin(turn)));
+    const rf_vec3 n = rfk_chord_symmetric_normal(chord, estimated, cos_exit);
+    CHECK_NEAR(rf_vec3_dot(chord, n2), cos_exit, 1e-12);
+    CHECK_NEAR(n.x, n2.x, 1e-9);
+    CHECK_NEAR(n.y, n2.y, 1e-9);
+    CHECK_NEAR(n.z, n2.z, 1e-9);
+  }
+  /* An estimate along the chord has no plane: the chord itself. */
+  {
+    const rf_vec3 chord = { 0.0, 0.6, 0.8 };
+    const rf_vec3 n = rfk_chord_symmetric_normal(chord, chord, 0.5);
+    CHECK(n.x == chord.x && n.y == chord.y && n.z == chord.z);
+  }
+  /* A cosine beyond 1 (rounding) stays a unit normal along the chord. */
+  {
+    const rf_vec3 n = rfk_chord_symmetric_normal(up, rf_vec3_make(1.0, 0.0, 0.0), 1.0 + 1e-12);
+    CHECK_NEAR(rf_vec3_length(n), 1.0, 1e-15);
+    CHECK_NEAR(n.z, 1.0, 1e-15);
+  }
+}
+
 int main(void)
 {
   test_reflect();
@@ -279,5 +330,6 @@ int main(void)
   test_fresnel_closed_forms();
   test_fresnel_tir_and_sweep();
   test_schlick();
+  test_chord_symmetric_normal_in_a_sphere();
   return RF_TEST_SUMMARY();
 }

@@ -137,4 +137,25 @@ RF_KERNEL rf_float rfk_fresnel_schlick(rf_float cosIncident, rf_float eta)
   return r0 + (1.0 - r0) * m * m * m * m * m;
 }
 
+/* The outward normal at the far end of a chord inside a convex glass, from an estimate of it:
+ * inside a sphere a chord meets the surface at both ends at one angle, so the normal is turned
+ * in the plane of the chord (unit) and the estimate until it meets the chord at cosExit, the
+ * cosine at the interface the chord began from. Used where the estimate is a texel's one chord
+ * on, which near a silhouette is off by many degrees: enough to reflect totally (and look
+ * inwards) a chord that a sphere lets out. Only the estimate's plane (its side of the chord) is
+ * kept; an estimate along the chord gives the chord. */
+RF_KERNEL rf_float3 rfk_chord_symmetric_normal(rf_float3 chord, rf_float3 estimated,
+  rf_float cosExit)
+{
+  rf_float3 across = rf_sub3(estimated, rf_scale3(chord, rf_dot3(estimated, chord)));
+  rf_float acrossLength = rf_length3(across);
+  if (!(acrossLength > 1e-4))
+  {
+    return chord;
+  }
+  rf_float c = rf_min(rf_abs(cosExit), 1.0);
+  rf_float sinExit = rf_sqrt(rf_max(1.0 - c * c, 0.0));
+  return rf_add3(rf_scale3(chord, c), rf_scale3(across, sinExit / acrossLength));
+}
+
 #endif /* RF_KERNEL_OPTICS_H */

@@ -330,8 +330,9 @@ RF_KERNEL rf_float rfk_peel_medium_ior(rf_material_table materials, int stack)
 
 /* A ray being followed through the layers: where it is, where it goes, the medium stack, its
  * side of the layers, the total internal reflections it took, the length it travelled inside
- * glass, the length of the segment that brought it to P and whether a reflection past the
- * bounces ended it. */
+ * glass, the length of the segment that brought it to P, whether a reflection past the
+ * bounces ended it and, for a split's reflected ray, the cosine at the exit it turned back from
+ * (0 where it split entering glass). */
 RF_STRUCT_BEGIN(rfk_peel_ray)
   rf_float3 P;
   rf_float3 T;
@@ -342,6 +343,7 @@ RF_STRUCT_BEGIN(rfk_peel_ray)
   rf_float travelled;
   rf_float chord;
   rf_bool ended;
+  rf_float splitCos;
 };
 
 /* The ray just inside glass `material`, entered at P1 (on layer 0) with unit direction T1. */
@@ -357,6 +359,7 @@ RF_KERNEL rfk_peel_ray rfk_peel_entered(rf_float3 P1, rf_float3 T1, int material
   ray.travelled = 0.0;
   ray.chord = 0.0;
   ray.ended = RF_FALSE;
+  ray.splitCos = 0.0;
   return ray;
 }
 
@@ -437,6 +440,7 @@ RF_KERNEL void rfk_peel_follow(rf_layer_stack layers, int count, rf_material_tab
         rfk_peel_ray reflectedRay = r;
         reflectedRay.T = rf_normalize3(rf_reflect3(r.T, outward));
         reflectedRay.side = rf_dot3(reflectedRay.T, towardViewer) < 0.0 ? hitLayer + 1 : hitLayer;
+        reflectedRay.splitCos = entering ? 0.0 : rf_dot3(r.T, outward);
         RF_DEREF(branch) = reflectedRay;
         RF_DEREF(branchWeight) = rfk_fresnel_dielectric(rf_dot3(r.T, outward), eta);
         splitting = RF_FALSE;

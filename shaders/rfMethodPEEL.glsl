@@ -150,26 +150,42 @@ bool rfPeelReflectedExit(rfk_peel_ray branch, int channel, out vec3 exitP, out v
   {
     return false;
   }
-  ivec2 texel = rfTexelOf(tc);
   float depth = -exitP.z;
+  // The texel under the estimate, else the nearest other of the 2 x 2 around it that holds a
+  // layer: a chord's end near the silhouette can project just past the mesh's rasterized
+  // coverage (the polygons lie inside the surface they sample), and reading that one texel
+  // alone lost the branch in a dotted ring of pixels.
+  ivec2 own = rfTexelOf(tc);
+  vec2 within = tc * rfViewport.zw - vec2(own) - 0.5;
+  ivec2 toward = ivec2(within.x < 0.0 ? -1 : 1, within.y < 0.0 ? -1 : 1);
+  bool acrossFirst = abs(within.x) >= abs(within.y);
+  ivec2 texel = own;
   int nearest = -1;
-  float nearestGap = 0.0;
-  // The packed depths read once for all the layers (unused channels hold 0).
-  vec4 depthsA = texelFetch(rfPeelDepthsA, texel, 0);
-#if RF_PEEL_LAYERS > 4
-  vec4 depthsB = texelFetch(rfPeelDepthsB, texel, 0);
-#endif
-  for (int layer = 0; layer < RF_PEEL_LAYERS; ++layer)
+  for (int candidate = 0; candidate < 4 && nearest < 0; ++candidate)
   {
+    ivec2 offset = candidate == 0 ? ivec2(0)
+      : candidate == 1 ? (acrossFirst ? ivec2(toward.x, 0) : ivec2(0, toward.y))
+      : candidate == 2 ? (acrossFirst ? ivec2(0, toward.y) : ivec2(toward.x, 0))
+                       : toward;
+    texel = clamp(own + offset, ivec2(0), ivec2(rfViewport.zw) - 1);
+    float nearestGap = 0.0;
+    // The packed depths read once for all the layers (unused channels hold 0).
+    vec4 depthsA = texelFetch(rfPeelDepthsA, texel, 0);
 #if RF_PEEL_LAYERS > 4
-    float layerDepth = layer < 4 ? depthsA[layer & 3] : depthsB[layer & 3];
-#else
-    float layerDepth = depthsA[layer & 3];
+    vec4 depthsB = texelFetch(rfPeelDepthsB, texel, 0);
 #endif
-    if (layerDepth > 0.0 && (nearest < 0 || abs(layerDepth - depth) < nearestGap))
+    for (int layer = 0; layer < RF_PEEL_LAYERS; ++layer)
     {
-      nearest = layer;
-      nearestGap = abs(layerDepth - depth);
+#if RF_PEEL_LAYERS > 4
+      float layerDepth = layer < 4 ? depthsA[layer & 3] : depthsB[layer & 3];
+#else
+      float layerDepth = depthsA[layer & 3];
+#endif
+      if (layerDepth > 0.0 && (nearest < 0 || abs(layerDepth - depth) < nearestGap))
+      {
+        nearest = layer;
+        nearestGap = abs(layerDepth - depth);
+      }
     }
   }
   if (nearest < 0)

@@ -1,8 +1,9 @@
-// Renders the glass contour in an ordinary VTK window and compares it with a baseline:
+// Renders the glass contour in an ordinary VTK window and compares it with a baseline, as VTK
+// does and pixel by pixel (the tests' rfTestBaseline.h):
 //   GlassContour -V baseline.png -T output_dir
 #include "GlassContourScene.h"
+#include "rfTestBaseline.h"
 
-#include <vtkRegressionTestImage.h>
 #include <vtkRenderWindow.h>
 
 #include <cstdio>
@@ -19,6 +20,5 @@ int main(int argc, char* argv[])
       scene.Pass->GetNumberOfGlassProps());
     return 1;
   }
-  const int result = vtkRegressionTestImageThreshold(window, 0.15);
-  return result == vtkRegressionTester::PASSED ? 0 : 1;
+  return rftest::CompareWithBaseline(argc, argv, window, 0.15);
 }

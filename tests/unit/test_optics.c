@@ -1,4 +1,5 @@
-/* Unit tests of rf_optics against closed forms computed here by hand. */
+/* Unit tests of rf_optics (and the kernel's chord-symmetric normal) against closed forms
+ * computed here by hand. */
 #include "rf_optics.h"
 
 #include "rf_kernel_optics.h"

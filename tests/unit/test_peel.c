@@ -362,8 +362,9 @@ static void test_single_sphere(void)
   c = compare(&s, 2, 0, 2);
   /* What is left is the layers' texels (the ball turns by 1.9 degrees per texel here): with
    * the normal read at the nearest texel the median was 0.67 degrees; filtered over the four
-   * texels around the exit (rfk_peel_normal) it is 0.03. */
-  check_close(&c, 500, 0.99, 0.1);
+   * texels around the exit (rfk_peel_normal) 0.03, 8 rays beyond 2 degrees; with the crossing
+   * placed on the filtered depth too (rfk_peel_depth_filtered) 0.006, none. */
+  check_close(&c, 500, 1.0, 0.02);
   /* K beyond the layers the scene has changes nothing (deep peeling on a convex shape). */
   {
     const comparison deep = compare(&s, 8, 4, 2);
@@ -383,8 +384,10 @@ static void test_nested(void)
   printf("a ball (1.8) inside a ball (1.33), rays through both:\n");
   two = compare(&s, 2, 0, 4);
   four = compare(&s, 4, 0, 4);
-  /* Two layers cannot see the inner ball; four follow the ray through it. */
-  check_close(&four, 100, 0.8, 0.3);
+  /* Two layers cannot see the inner ball; four follow the ray through it. With the crossings
+   * placed on the layers' depths a texel at a time, 86 % within 2 degrees and a median of 0.122;
+   * on the filtered depths (rfk_peel_depth_filtered) 89 % and 0.035. */
+  check_close(&four, 100, 0.88, 0.08);
   CHECK(two.close < 0.05 * two.rays);
 }
 
@@ -397,7 +400,8 @@ static void test_overlapping(void)
   make_scene(&s, balls, 2, ior);
   printf("two balls one behind the other, rays through both:\n");
   c = compare(&s, 4, 0, 4);
-  check_close(&c, 100, 0.8, 0.5);
+  /* A texel's depth at a time: 84 % within 2 degrees, median 0.226; filtered: 87 %, 0.071. */
+  check_close(&c, 100, 0.86, 0.15);
 }
 
 static void test_bad_input(void)

@@ -115,6 +115,50 @@ RF_KERNEL int rfk_peel_side_at(rf_layer_stack layers, int count, rf_float2 viewp
   return rf_layer_side(layers, count, tc, viewportSize, ray.depthP + t * ray.depthT);
 }
 
+/* The depths of layer `layer` at two points a fraction of a texel apart (aTC, bTC, the ends
+ * of a crossing's final bracket), filtered: the bilinear weights of the four texels around
+ * their midpoint, over those holding a surface within `tolerance` of `centre` (the depth the
+ * crossing was found on), so that the layer reads as the surface it samples, not as flat steps
+ * a texel wide, without blending across its faults (as rfk_peel_normal filters the normals);
+ * `centre` where none does. Four fetches for both ends. */
+RF_KERNEL rf_float2 rfk_peel_depths_filtered(rf_layer_stack layers, rf_float2 aTC,
+  rf_float2 bTC, rf_float2 size, int layer, rf_float centre, rf_float tolerance)
+{
+  rf_float2 mid = rf_scale2(rf_add2(aTC, bTC), 0.5);
+  rf_float fx = rf_floor(mid.x * size.x - 0.5);
+  rf_float fy = rf_floor(mid.y * size.y - 0.5);
+  rf_float ax = aTC.x * size.x - 0.5 - fx;
+  rf_float ay = aTC.y * size.y - 0.5 - fy;
+  rf_float bx = bTC.x * size.x - 0.5 - fx;
+  rf_float by = bTC.y * size.y - 0.5 - fy;
+  rf_float aSum = 0.0;
+  rf_float aWeights = 0.0;
+  rf_float bSum = 0.0;
+  rf_float bWeights = 0.0;
+  for (int j = 0; j < 4; ++j)
+  {
+    rf_float ox = (j == 1 || j == 3) ? 1.0 : 0.0;
+    rf_float oy = j >= 2 ? 1.0 : 0.0;
+    rf_float2 at = rf_make2(rf_clamp((fx + ox + 0.5) / size.x, 0.0, 1.0),
+      rf_clamp((fy + oy + 0.5) / size.y, 0.0, 1.0));
+    rf_float d = rf_layer_depth(layers, at, size, layer);
+    /* Bilinear weights, clamped: an end a hair past the four texels keeps their patch. */
+    rf_float aw = rf_clamp(ox > 0.0 ? ax : 1.0 - ax, 0.0, 1.0) *
+      rf_clamp(oy > 0.0 ? ay : 1.0 - ay, 0.0, 1.0);
+    rf_float bw = rf_clamp(ox > 0.0 ? bx : 1.0 - bx, 0.0, 1.0) *
+      rf_clamp(oy > 0.0 ? by : 1.0 - by, 0.0, 1.0);
+    if (d > 0.0 && rf_abs(d - centre) <= tolerance)
+    {
+      aSum = aSum + aw * d;
+      aWeights = aWeights + aw;
+      bSum = bSum + bw * d;
+      bWeights = bWeights + bw;
+    }
+  }
+  return rf_make2(aWeights > 0.0 ? aSum / aWeights : centre,
+    bWeights > 0.0 ? bSum / bWeights : centre);
+}
+
 /* The next crossing of the ray P + t T, 0 < t <= tEnd, with the layers, starting on side
  * `side` (how many layers lie in front of the ray just after P). faultSize is the paper's SIZE,
  * the depth change across a final bracket below which a crossing is a surface (the fault
@@ -210,12 +254,19 @@ RF_KERNEL int rfk_peel_next_crossing(rf_layer_stack layers, int count, rfk_camer
       rf_abs(-farQ.z - farDepth) <= faultSize && !beside)
     {
       /* Beyond the paper: the crossing placed by one secant step on the bracket (the ray's
-       * depth less the crossed layer's, linear in t where both ends see one texel's depth),
-       * in place of further halvings, which cost a fetch each. */
-      rf_float nearGap = -nearQ.z - nearDepth;
-      rf_float farGap = -farQ.z - farDepth;
-      rf_float share = (nearGap < 0.0) != (farGap < 0.0) ? nearGap / (nearGap - farGap) : 1.0;
-      rf_float3 Q = rf_add3(P, rf_scale3(T, lo + share * (hi - lo)));
+       * depth less the crossed layer's, linear in t), in place of further halvings, which
+       * cost a fetch each. The layer's depth filtered (rfk_peel_depths_filtered): read a
+       * texel at a time it is flat steps, and where a ray grazes the surface the step it
+       * meets moves its crossing along the ray by far more than a texel (stair-stepped arcs
+       * in the nested contours); the filtered crossing can lie outside the bracket, so the
+       * secant line may reach past it, up to the march's step it was found in. */
+      rf_float2 filtered = rfk_peel_depths_filtered(
+        layers, nearTC, farTC, pixels, crossedLayer, farDepth, faultSize);
+      rf_float nearGap = -nearQ.z - filtered.x;
+      rf_float farGap = -farQ.z - filtered.y;
+      rf_float tCross = nearGap != farGap ? lo + nearGap / (nearGap - farGap) * (hi - lo) : hi;
+      tCross = tCross >= t - dt && tCross <= t ? tCross : hi;
+      rf_float3 Q = rf_add3(P, rf_scale3(T, tCross));
       rf_float2 qTC;
       rf_bool onImage = rfk_peel_on_image(camera, Q, RF_ADDR(qTC));
       RF_DEREF(hit) = onImage ? Q : farQ;

@@ -257,9 +257,10 @@ RF_KERNEL int rfk_peel_next_crossing(rf_layer_stack layers, int count, rfk_camer
        * depth less the crossed layer's, linear in t), in place of further halvings, which
        * cost a fetch each. The layer's depth filtered (rfk_peel_depths_filtered): read a
        * texel at a time it is flat steps, and where a ray grazes the surface the step it
-       * meets moves its crossing along the ray by far more than a texel (stair-stepped arcs
-       * in the nested contours); the filtered crossing can lie outside the bracket, so the
-       * secant line may reach past it, up to the march's step it was found in. */
+       * meets moves its crossing along the ray by far more than a texel (stair-stepped
+       * streaks inside the balls of the layers tests); the filtered crossing can lie outside
+       * the bracket, so the secant line may reach past it, up to the march's step it was
+       * found in. */
       rf_float2 filtered = rfk_peel_depths_filtered(
         layers, nearTC, farTC, pixels, crossedLayer, farDepth, faultSize);
       rf_float nearGap = -nearQ.z - filtered.x;

@@ -162,6 +162,7 @@ void vtkRefractionGeometryStage::ReleaseGraphicsResources(vtkWindow* w)
     glDeleteQueries(1, &this->PeelQuery);
   }
   this->PeelQuery = 0;
+  this->PeelCount->ReleaseGraphicsResources(w);
   this->SHTransfer->ReleaseGraphicsResources(w);
   this->PieceSheets->ReleaseGraphicsResources(w);
 }
@@ -212,7 +213,7 @@ void vtkRefractionGeometryStage::DrawProps(vtkOpenGLRenderer* ren, int stage)
 //------------------------------------------------------------------------------
 void vtkRefractionGeometryStage::DrawIntoTargets(vtkOpenGLRenderer* ren,
   vtkRefractionTargets* targets, const std::vector<int>& colours, int depth, double clearDepth,
-  unsigned int depthFunc, int stage)
+  unsigned int depthFunc, int stage, unsigned int anyKeptQuery, bool* keptTwice)
 {
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   vtkOpenGLState* ostate = renWin->GetState();
@@ -238,7 +239,20 @@ void vtkRefractionGeometryStage::DrawIntoTargets(vtkOpenGLRenderer* ren,
     ostate->vtkglEnable(GL_DEPTH_TEST);
     ostate->vtkglDepthFunc(depthFunc);
     ostate->vtkglDisable(GL_BLEND);
+    const bool counting = keptTwice && this->PeelCount->Start(renWin, targets->Get(depth));
+    if (anyKeptQuery != 0)
+    {
+      glBeginQuery(GL_ANY_SAMPLES_PASSED, anyKeptQuery);
+    }
     this->DrawProps(ren, stage);
+    if (anyKeptQuery != 0)
+    {
+      glEndQuery(GL_ANY_SAMPLES_PASSED); // before the count's own query
+    }
+    if (keptTwice)
+    {
+      *keptTwice = counting ? this->PeelCount->Finish(renWin) : true;
+    }
   }
   this->ActiveDrawBuffers = 0;
 }
@@ -273,8 +287,12 @@ void vtkRefractionGeometryStage::DrawBack(vtkOpenGLRenderer* ren, vtkRefractionT
 
 //------------------------------------------------------------------------------
 bool vtkRefractionGeometryStage::DrawPeel(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets,
-  int layer, int layers, bool askWhetherEmpty)
+  int layer, int layers, bool askWhetherEmpty, bool* behind)
 {
+  if (behind)
+  {
+    *behind = true;
+  }
   if (!this->Peel || layer < 1 || layer > 7)
   {
     return false;
@@ -286,10 +304,6 @@ bool vtkRefractionGeometryStage::DrawPeel(vtkOpenGLRenderer* ren, vtkRefractionT
   this->PeelPrevious = targets->Get(
     layer == 1 ? vtkRefractionTargets::FRONT_SURFACE : vtkRefractionTargets::PEEL_1 + layer - 2);
   this->PeelPrevious->Activate();
-  if (askWhetherEmpty)
-  {
-    glBeginQuery(GL_ANY_SAMPLES_PASSED, this->PeelQuery);
-  }
   // The furthest surface behind the previous layer where rf_peel_last_is_furthest says so (the
   // peeling test of rfGeometryFS.glsl, GL_GREATER as DIR's back capture): with two layers the
   // nearest one behind the front, on glass of more than two surfaces an inner surface, sent
@@ -298,11 +312,7 @@ bool vtkRefractionGeometryStage::DrawPeel(vtkOpenGLRenderer* ren, vtkRefractionT
   const bool furthest = layer == layers - 1 && rf_peel_last_is_furthest(layers);
   this->DrawIntoTargets(ren, targets, { vtkRefractionTargets::PEEL_1 + layer - 1 },
     vtkRefractionTargets::PEEL_Z, furthest ? 0.0 : 1.0, furthest ? GL_GREATER : GL_LESS,
-    STAGE_PEEL);
-  if (askWhetherEmpty)
-  {
-    glEndQuery(GL_ANY_SAMPLES_PASSED);
-  }
+    STAGE_PEEL, askWhetherEmpty ? this->PeelQuery : 0, behind);
   this->PeelPrevious->Deactivate();
   this->PeelPrevious = nullptr;
   if (!askWhetherEmpty)
@@ -320,17 +330,29 @@ bool vtkRefractionGeometryStage::DrawPeel(vtkOpenGLRenderer* ren, vtkRefractionT
 int vtkRefractionGeometryStage::DrawPeelLayers(
   vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layers, bool stopAtEmpty)
 {
+  this->PeelDraws = 0;
   if (this->PeelKBufferConfigured == layers && targets->Get(vtkRefractionTargets::PEEL_SLOTS))
   {
+    this->PeelDraws = 2;
     return this->DrawPeelKBuffer(ren, targets, layers);
   }
   for (int layer = 1; layer < layers; ++layer)
   {
-    if (!this->DrawPeel(ren, targets, layer, layers, stopAtEmpty))
+    ++this->PeelDraws;
+    // Whether a layer can follow this one, asked where one more would be drawn.
+    bool behind = true;
+    if (!this->DrawPeel(ren, targets, layer, layers, stopAtEmpty,
+          stopAtEmpty && layer + 1 < layers ? &behind : nullptr))
     {
       // Nothing behind this layer's (empty) texels either: the layers from here on are left
       // as they are, and the packing and the shading read them as empty.
       return layer;
+    }
+    if (!behind)
+    {
+      // No pixel kept two surfaces behind the layer before: the next would come out empty
+      // (on convex glass, the draw that learnt so was a third of PEEL's capture).
+      return layer + 1;
     }
   }
   return layers;

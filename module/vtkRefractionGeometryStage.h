@@ -14,6 +14,7 @@
 
 #include "vtkOpenGLRenderPass.h"
 #include "vtkNew.h"       // For members
+#include "vtkRefractionPeelCount.h"   // For members
 #include "vtkRefractionPieceSheets.h" // For members
 #include "vtkRefractionProgramGuard.h" // For members
 #include "vtkRefractionSHTransfer.h" // For members
@@ -74,18 +75,24 @@ public:
   /// surface of a glass holding more). Returns whether any fragment of the glass was kept
   /// (an occlusion query, read at once): an empty layer leaves nothing for the ones behind it.
   /// With `askWhetherEmpty` false no query is made (true is returned): across MPI ranks every
-  /// layer is drawn anyway, and the read would wait for each layer for nothing.
+  /// layer is drawn anyway, and the read would wait for each layer for nothing. With
+  /// `behind`, also whether a layer can follow this one: false where no pixel kept two
+  /// fragments or more (vtkRefractionPeelCount), so that the next layer would be empty.
   bool DrawPeel(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layer, int layers,
-    bool askWhetherEmpty = true);
+    bool askWhetherEmpty = true, bool* behind = nullptr);
   /**
    * PEEL's layers 1 .. K - 1 behind the front (drawn first), and how many of the K layers
-   * hold glass anywhere (the front counts). Peeled one draw per layer (DrawPeel, stopping at
-   * the first empty one when `stopAtEmpty`), or, configured with SetPeelKBuffer, in two draws
+   * hold glass anywhere (the front counts). Peeled one draw per layer (DrawPeel, stopping,
+   * when `stopAtEmpty`, at the first empty one or after the first behind which no pixel holds
+   * another surface), or, configured with SetPeelKBuffer, in two draws
    * whatever K: the depths sorted into PEEL_SLOTS with image atomics, then each layer's
    * texels. The same texels either way.
    */
   int DrawPeelLayers(
     vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layers, bool stopAtEmpty);
+  /// The draws of the glass the last DrawPeelLayers made (one per layer peeled; the
+  /// k-buffer's two).
+  int GetPeelDraws() const { return this->PeelDraws; }
   /// Whether this context can sort `layers` layers of `height` rows with image atomics (GL
   /// 4.2's image load/store and 3.3's float bits, or their ARB extensions), with K image
   /// units for the fragment shader and a texture (K - 1) times the height, plus one row.
@@ -169,9 +176,13 @@ private:
   vtkRefractionGeometryStage(const vtkRefractionGeometryStage&) = delete;
   void operator=(const vtkRefractionGeometryStage&) = delete;
 
+  /// With `anyKeptQuery` (not 0), the draw inside that GL_ANY_SAMPLES_PASSED query. With
+  /// `keptTwice`, the draw's kept fragments are counted in the depth target's stencil and it
+  /// says whether any pixel kept two or more (vtkRefractionPeelCount; true where they could
+  /// not be counted).
   void DrawIntoTargets(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets,
     const std::vector<int>& colours, int depth, double clearDepth, unsigned int depthFunc,
-    int stage);
+    int stage, unsigned int anyKeptQuery = 0, bool* keptTwice = nullptr);
   void DrawProps(vtkOpenGLRenderer* ren, int stage);
   /// The k-buffer's two draws (DrawPeelLayers); returns the layers found.
   int DrawPeelKBuffer(vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, int layers);
@@ -211,6 +222,8 @@ private:
   bool CompositeProgram = false; ///< the mapper's program holds the composite (DrawProps)
   vtkTextureObject* PeelPrevious = nullptr; ///< the layer the one being drawn peels behind
   unsigned int PeelQuery = 0;               ///< DrawPeel's occlusion query (0: none yet)
+  vtkNew<vtkRefractionPeelCount> PeelCount; ///< whether a layer can follow (DrawPeel)
+  int PeelDraws = 0;                        ///< GetPeelDraws
   bool Parallel = false;
   vtkNew<vtkMatrix4x4> InverseProjection;
   int Stage = STAGE_NONE;

@@ -115,6 +115,7 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SmoothInternalReflections: " << this->SmoothInternalReflections << "\n";
   os << indent << "PeelLayers: " << this->PeelLayers << "\n";
   os << indent << "PeelLayersFound: " << this->PeelLayersFound << "\n";
+  os << indent << "PeelLayersDrawn: " << this->PeelLayersDrawn << "\n";
   os << indent << "PeelCapture: " << this->PeelCapture << "\n";
   os << indent << "SHSmoothing: " << this->SHSmoothing << "\n";
   os << indent << "EnvironmentMode: "
@@ -553,6 +554,7 @@ void vtkRefractionPass::RenderGlass(
       vtkRefractionDepthRange::ComputeBounds(ren, glass, this->BoundsDepthRange);
       this->PeelLayersFound =
         this->GeometryStage->DrawPeelLayers(ren, this->Targets, peelLayers, true);
+      this->PeelLayersDrawn = this->GeometryStage->GetPeelDraws();
     }
     const bool packed =
       this->LayerPack->Pack(renWin, this->Targets, peelLayers, this->PeelLayersFound);

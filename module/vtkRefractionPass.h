@@ -364,6 +364,15 @@ public:
   vtkGetMacro(PeelLayersFound, int);
 
   /**
+   * PEEL: how many times the last frame drew the glass to capture the layers behind the front
+   * (0 before the first PEEL frame): one draw per layer peeled, two with the k-buffer
+   * (SetPeelCapture). Peeling stops at the first empty layer, and without drawing the next
+   * where no pixel holds another surface behind the layer just drawn: on convex glass (a
+   * ball) one draw whatever PeelLayers.
+   */
+  vtkGetMacro(PeelLayersDrawn, int);
+
+  /**
    * What the glass shows where its rays leave toward the surroundings. Always the renderer's
    * environment texture when it is a cube map (a lat-long image through
    * vtkEquirectangularToCubeMapTexture, vtkRefractionImageIO::ReadEnvironment), honouring
@@ -651,6 +660,7 @@ protected:
   int PeelLayers = 4;
   int PeelCapture = PEEL_CAPTURE_AUTO;
   int PeelLayersFound = 0;
+  int PeelLayersDrawn = 0;
   double SHSmoothing = 5.0;
   bool Fresnel = true;
   bool FilteredLookups = true;

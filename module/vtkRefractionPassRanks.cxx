@@ -28,6 +28,7 @@ bool vtkRefractionPass::CompositeAcrossRanks(vtkOpenGLRenderer* ren,
   {
     this->StageTimers->Start(TIMED_BACK_CAPTURE);
     this->GeometryStage->DrawPeelLayers(ren, this->Targets, peelLayers, false);
+    this->PeelLayersDrawn = this->GeometryStage->GetPeelDraws();
     this->StageTimers->Stop(TIMED_BACK_CAPTURE);
   }
   if ((method->NeedsDepthRange() && !reduction) || peelLayers > 1)

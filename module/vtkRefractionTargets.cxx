@@ -144,8 +144,9 @@ void vtkRefractionTargets::Allocate(vtkOpenGLRenderWindow* renWin, int target)
   {
     auto depth = vtkSmartPointer<vtkTextureObject>::New();
     depth->SetContext(renWin);
-    if (target == SCENE_DEPTH && this->SceneDepthFormat < 0)
+    if ((target == SCENE_DEPTH && this->SceneDepthFormat < 0) || target == PEEL_Z)
     {
+      // PEEL_Z's stencil counts the fragments a peeling draw keeps (vtkRefractionPeelCount).
       depth->AllocateDepthStencil(this->Width, this->Height);
     }
     else if (target == COARSE_Z)

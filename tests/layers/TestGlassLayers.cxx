@@ -348,11 +348,20 @@ int Deep()
   auto eight = scene.Render();
   const int ballDifference = rftest::MaxChannelDifference(four, eight);
   const int ballFound = scene.Pass->GetPeelLayersFound();
+  // Convex: no pixel keeps two surfaces behind the front, so the second layer is not drawn.
+  const int ballDrawn = scene.Pass->GetPeelLayersDrawn();
   // Peeling stops at the first empty layer: a ball inside the ball fills layers 2 and 3; taken
   // out again, those targets still hold it, and the ball alone must read them as empty.
   auto inner = AddBall(scene, 0.0, 0.0, 0.0, 0.5, 1.9);
   scene.Render();
   const int nestedFound = scene.Pass->GetPeelLayersFound();
+  // Peeled (AUTO takes the k-buffer's two draws here, once a frame found more than three
+  // layers): three layers behind the front, the last found without drawing a fourth.
+  scene.Pass->SetPeelCapture(vtkRefractionPass::PEEL_CAPTURE_DEPTH_PEELING);
+  scene.Render();
+  const int nestedDrawn = scene.Pass->GetPeelLayersDrawn();
+  const int nestedPeeledFound = scene.Pass->GetPeelLayersFound();
+  scene.Pass->SetPeelCapture(vtkRefractionPass::PEEL_CAPTURE_AUTO);
   scene.Renderer->RemoveActor(inner);
   auto after = scene.Render();
   const int staleDifference = rftest::MaxChannelDifference(eight, after);
@@ -388,16 +397,21 @@ int Deep()
   }
   vtkOutputWindow::SetInstance(nullptr);
   std::printf("deep: K = 8 against K = 4 on a ball: largest channel difference %d; layers "
-              "found with K = 8: %d for the ball, %d with a ball inside it, the ball again after "
-              "it: largest channel difference %d; torus of index 2.4 with K = 8, B = 4: %d glass "
-              "pixels, %d non-finite components, %d errors, %d warnings\n",
-    ballDifference, ballFound, nestedFound, staleDifference, glass, notFinite,
-    log->Count("error"), log->Count("warning"));
+              "found (drawn) with K = 8: %d (%d) for the ball, %d (%d) with a ball inside it, the "
+              "ball again after it: largest channel difference %d; torus of index 2.4 with K = "
+              "8, B = 4: %d glass pixels, %d non-finite components, %d errors, %d warnings\n",
+    ballDifference, ballFound, ballDrawn, nestedFound, nestedDrawn, staleDifference, glass,
+    notFinite, log->Count("error"), log->Count("warning"));
   RF_REQUIRE(ballDifference <= 1, "the empty layers changed the ball (difference %d)",
     ballDifference);
   RF_REQUIRE(ballFound == 2 && nestedFound == 4,
     "layers found: %d for a ball (2 expected), %d for nested balls (4 expected)", ballFound,
     nestedFound);
+  // Drawn: the layers behind the front found, without the empty one after them.
+  RF_REQUIRE(ballDrawn == 1 && nestedDrawn == 3 && nestedPeeledFound == 4,
+    "peeling draws: %d for a ball (1 expected), %d for nested balls (3 expected, finding %d "
+    "layers, 4 expected)",
+    ballDrawn, nestedDrawn, nestedPeeledFound);
   RF_REQUIRE(staleDifference == 0,
     "the layers left from the nested balls changed the ball (difference %d)", staleDifference);
   RF_REQUIRE(glass > 2000, "too few glass pixels: %d", glass);

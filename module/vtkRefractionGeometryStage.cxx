@@ -351,7 +351,7 @@ int vtkRefractionGeometryStage::DrawPeelLayers(
     if (!behind)
     {
       // No pixel kept two surfaces behind the layer before: the next would come out empty
-      // (on convex glass, the draw that learnt so was a third of PEEL's capture).
+      // (on a convex glass the draw that learnt so was about half the layers' capture).
       return layer + 1;
     }
   }

@@ -93,6 +93,11 @@ public:
   /// The draws of the glass the last DrawPeelLayers made (one per layer peeled; the
   /// k-buffer's two).
   int GetPeelDraws() const { return this->PeelDraws; }
+  /// Whether the last DrawPeelLayers drew each layer's one facing only: one glass prop whose
+  /// surfaces every sight line enters and leaves by turns
+  /// (vtkRefractionSurfaceModel::Alternates), so that layer k behind the front is a surface
+  /// the ray leaves through when k is odd (or the furthest), one it enters when k is even.
+  bool GetPeelByFacing() const { return this->PeelByFacing; }
   /// Whether this context can sort `layers` layers of `height` rows with image atomics (GL
   /// 4.2's image load/store and 3.3's float bits, or their ARB extensions), with K image
   /// units for the fragment shader and a texture (K - 1) times the height, plus one row.
@@ -224,6 +229,9 @@ private:
   unsigned int PeelQuery = 0;               ///< DrawPeel's occlusion query (0: none yet)
   vtkNew<vtkRefractionPeelCount> PeelCount; ///< whether a layer can follow (DrawPeel)
   int PeelDraws = 0;                        ///< GetPeelDraws
+  bool PeelByFacing = false;                ///< GetPeelByFacing
+  int PeelLayer = 0;         ///< the layer DrawPeel draws (0: none)
+  bool PeelFurthest = false; ///< it keeps the furthest surface behind the one before
   bool Parallel = false;
   vtkNew<vtkMatrix4x4> InverseProjection;
   int Stage = STAGE_NONE;

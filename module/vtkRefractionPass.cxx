@@ -116,6 +116,7 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PeelLayers: " << this->PeelLayers << "\n";
   os << indent << "PeelLayersFound: " << this->PeelLayersFound << "\n";
   os << indent << "PeelLayersDrawn: " << this->PeelLayersDrawn << "\n";
+  os << indent << "PeelFacingCulled: " << this->PeelFacingCulled << "\n";
   os << indent << "PeelCapture: " << this->PeelCapture << "\n";
   os << indent << "SHSmoothing: " << this->SHSmoothing << "\n";
   os << indent << "EnvironmentMode: "
@@ -555,6 +556,7 @@ void vtkRefractionPass::RenderGlass(
       this->PeelLayersFound =
         this->GeometryStage->DrawPeelLayers(ren, this->Targets, peelLayers, true);
       this->PeelLayersDrawn = this->GeometryStage->GetPeelDraws();
+      this->PeelFacingCulled = this->GeometryStage->GetPeelByFacing();
     }
     const bool packed =
       this->LayerPack->Pack(renWin, this->Targets, peelLayers, this->PeelLayersFound);

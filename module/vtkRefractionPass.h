@@ -373,6 +373,15 @@ public:
   vtkGetMacro(PeelLayersDrawn, int);
 
   /**
+   * PEEL: whether the last frame peeled each layer's one facing only (false before the first
+   * PEEL frame, and with the k-buffer): where one glass actor of one closed mesh is drawn
+   * whose pieces neither nest nor wind against each other, every sight line enters and
+   * leaves it by turns, so each layer behind the front is drawn with the faces of the other
+   * facing culled. The same layers, in about half the fragments.
+   */
+  vtkGetMacro(PeelFacingCulled, bool);
+
+  /**
    * What the glass shows where its rays leave toward the surroundings. Always the renderer's
    * environment texture when it is a cube map (a lat-long image through
    * vtkEquirectangularToCubeMapTexture, vtkRefractionImageIO::ReadEnvironment), honouring
@@ -661,6 +670,7 @@ protected:
   int PeelCapture = PEEL_CAPTURE_AUTO;
   int PeelLayersFound = 0;
   int PeelLayersDrawn = 0;
+  bool PeelFacingCulled = false;
   double SHSmoothing = 5.0;
   bool Fresnel = true;
   bool FilteredLookups = true;

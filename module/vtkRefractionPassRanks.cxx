@@ -29,6 +29,7 @@ bool vtkRefractionPass::CompositeAcrossRanks(vtkOpenGLRenderer* ren,
     this->StageTimers->Start(TIMED_BACK_CAPTURE);
     this->GeometryStage->DrawPeelLayers(ren, this->Targets, peelLayers, false);
     this->PeelLayersDrawn = this->GeometryStage->GetPeelDraws();
+    this->PeelFacingCulled = this->GeometryStage->GetPeelByFacing();
     this->StageTimers->Stop(TIMED_BACK_CAPTURE);
   }
   if ((method->NeedsDepthRange() && !reduction) || peelLayers > 1)

@@ -44,11 +44,62 @@ double TwiceArea2(vtkPolyData* poly, vtkIdType count, const vtkIdType* ids)
   return vtkMath::Dot(normal, normal);
 }
 
-// The connected pieces of a mesh with boundary edges (points keyed by position, as the
-// closedness test keys them; polygons of no area left out), each piece's boundary length (the
-// edges used by one polygon) and area, and which pieces are open as a whole.
-void MeasurePieces(vtkPolyData* poly, const std::vector<std::uint64_t>& keys,
-  double minimumArea2, vtkRefractionSurfaceModel::Mesh& surface)
+// The largest side of the bounds (not 0).
+double Extent(const double bounds[6])
+{
+  return std::max(
+    { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-300 });
+}
+
+// Twice the squared area below which a polygon covers nothing (GetMesh).
+double MinimumArea2(double extent)
+{
+  return 1e-24 * extent * extent * extent * extent;
+}
+
+// Two pseudo-random 64-bit keys per point from its position quantized to 2^-20 of the
+// bounds, so that the duplicated points of a seam share them (GetMesh).
+void PositionKeys(vtkPolyData* poly, const double bounds[6], std::vector<std::uint64_t> keys[2])
+{
+  const double extent = Extent(bounds);
+  const vtkIdType numberOfPoints = poly->GetNumberOfPoints();
+  keys[0].resize(numberOfPoints);
+  keys[1].resize(numberOfPoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    double p[3];
+    poly->GetPoint(i, p);
+    std::uint64_t key = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double unit = std::min(std::max((p[k] - bounds[2 * k]) / extent, 0.0), 1.0);
+      key = (key << 21) | static_cast<std::uint64_t>(std::llround(unit * 1048576.0));
+    }
+    for (int salt = 0; salt < 2; ++salt)
+    {
+      std::uint64_t x = key * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(salt + 1);
+      x ^= x >> 31;
+      x *= 0xBF58476D1CE4E5B9ULL;
+      x ^= x >> 29;
+      keys[salt][i] = x;
+    }
+  }
+}
+
+// A mesh's polygons and their connected pieces (points keyed by position, as the closedness
+// test keys them; polygons of no area left out and joining nothing).
+struct PieceLabels
+{
+  std::vector<std::int64_t> Offsets{ 0 };
+  std::vector<std::int64_t> Connectivity;
+  std::vector<unsigned char> Keep; ///< per polygon: 0 for one of no area
+  std::vector<double> Areas;       ///< per polygon
+  std::vector<std::int64_t> Piece; ///< per point, -1 where no kept polygon uses it
+  std::int64_t Pieces = 0;
+};
+
+bool LabelPieces(vtkPolyData* poly, const std::vector<std::uint64_t>& keys,
+  double minimumArea2, PieceLabels& labels)
 {
   const vtkIdType numberOfPoints = poly->GetNumberOfPoints();
   std::vector<std::int64_t> classes(numberOfPoints);
@@ -60,29 +111,43 @@ void MeasurePieces(vtkPolyData* poly, const std::vector<std::uint64_t>& keys,
       classes[i] = first.emplace(keys[i], i).first->second;
     }
   }
-  std::vector<std::int64_t> offsets(1, 0);
-  std::vector<std::int64_t> connectivity;
-  std::vector<unsigned char> keep;
-  std::vector<double> areas;
   vtkCellArray* polys = poly->GetPolys();
   vtkIdType count = 0;
   const vtkIdType* ids = nullptr;
   for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
   {
     const double area2 = count >= 3 ? TwiceArea2(poly, count, ids) : 0.0;
-    keep.push_back(area2 > minimumArea2 ? 1 : 0);
-    areas.push_back(keep.back() ? 0.5 * std::sqrt(area2) : 0.0);
-    connectivity.insert(connectivity.end(), ids, ids + count);
-    offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+    labels.Keep.push_back(area2 > minimumArea2 ? 1 : 0);
+    labels.Areas.push_back(labels.Keep.back() ? 0.5 * std::sqrt(area2) : 0.0);
+    labels.Connectivity.insert(labels.Connectivity.end(), ids, ids + count);
+    labels.Offsets.push_back(static_cast<std::int64_t>(labels.Connectivity.size()));
   }
-  std::vector<std::int64_t> piece(numberOfPoints);
-  std::int64_t pieces = 0;
-  if (rf_pieces_label(numberOfPoints, classes.data(), static_cast<std::int64_t>(keep.size()),
-        offsets.data(), connectivity.data(), keep.data(), piece.data(), &pieces) != RF_OK ||
-    pieces <= 0)
+  labels.Piece.resize(numberOfPoints);
+  // The validation refuses meshes that fail here before they are drawn.
+  return rf_pieces_label(numberOfPoints, classes.data(),
+           static_cast<std::int64_t>(labels.Keep.size()), labels.Offsets.data(),
+           labels.Connectivity.data(), labels.Keep.data(), labels.Piece.data(),
+           &labels.Pieces) == RF_OK &&
+    labels.Pieces > 0;
+}
+
+// The connected pieces of a mesh with boundary edges, each piece's boundary length (the
+// edges used by one polygon) and area, and which pieces are open as a whole.
+void MeasurePieces(vtkPolyData* poly, const std::vector<std::uint64_t>& keys,
+  double minimumArea2, vtkRefractionSurfaceModel::Mesh& surface)
+{
+  PieceLabels labels;
+  if (!LabelPieces(poly, keys, minimumArea2, labels))
   {
-    return; // the validation refuses such meshes before they are drawn
+    return;
   }
+  const vtkIdType numberOfPoints = poly->GetNumberOfPoints();
+  const std::vector<std::int64_t>& offsets = labels.Offsets;
+  const std::vector<std::int64_t>& connectivity = labels.Connectivity;
+  const std::vector<unsigned char>& keep = labels.Keep;
+  const std::vector<double>& areas = labels.Areas;
+  const std::vector<std::int64_t>& piece = labels.Piece;
+  const std::int64_t pieces = labels.Pieces;
   std::vector<double> length(pieces, 0.0);
   std::vector<double> area(pieces, 0.0);
   struct Edge
@@ -161,6 +226,130 @@ void MeasurePieces(vtkPolyData* poly, const std::vector<std::uint64_t>& keys,
     first = false;
   }
 }
+
+// Whether the connected pieces of a closed, consistently wound mesh alternate along every
+// sight line (vtkRefractionSurfaceModel::Alternates): each piece bounds a solid, so a line
+// enters and leaves it by turns; pieces that do not nest bound disjoint solids, so the turns
+// hold across them too. A piece inside another (its bounds inside the other's), or wound the
+// other way (its signed volume), breaks them.
+bool PiecesAlternate(vtkPolyData* poly)
+{
+  double bounds[6];
+  poly->GetBounds(bounds);
+  std::vector<std::uint64_t> keys[2];
+  PositionKeys(poly, bounds, keys);
+  PieceLabels labels;
+  if (!LabelPieces(poly, keys[0], MinimumArea2(Extent(bounds)), labels) ||
+    labels.Pieces > vtkRefractionSurfaceModel::MaximumAlternatingPieces)
+  {
+    return false;
+  }
+  const double centre[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]) };
+  const size_t pieces = static_cast<size_t>(labels.Pieces);
+  std::vector<double> volume(pieces, 0.0);
+  for (size_t p = 0; p + 1 < labels.Offsets.size(); ++p)
+  {
+    const std::int64_t* cell = labels.Connectivity.data() + labels.Offsets[p];
+    const std::int64_t n = labels.Offsets[p + 1] - labels.Offsets[p];
+    if (!labels.Keep[p] || n < 3)
+    {
+      continue;
+    }
+    double a[3];
+    double b[3];
+    double c[3];
+    poly->GetPoint(cell[0], a);
+    for (int k = 0; k < 3; ++k)
+    {
+      a[k] -= centre[k];
+    }
+    for (std::int64_t j = 1; j + 1 < n; ++j)
+    {
+      poly->GetPoint(cell[j], b);
+      poly->GetPoint(cell[j + 1], c);
+      for (int k = 0; k < 3; ++k)
+      {
+        b[k] -= centre[k];
+        c[k] -= centre[k];
+      }
+      double cross[3];
+      vtkMath::Cross(b, c, cross);
+      volume[static_cast<size_t>(labels.Piece[cell[0]])] += vtkMath::Dot(a, cross);
+    }
+  }
+  std::vector<double> pieceBounds(6 * pieces);
+  std::vector<unsigned char> seen(pieces, 0);
+  for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i)
+  {
+    if (labels.Piece[i] < 0)
+    {
+      continue;
+    }
+    const size_t piece = static_cast<size_t>(labels.Piece[i]);
+    double* range = pieceBounds.data() + 6 * piece;
+    double x[3];
+    poly->GetPoint(i, x);
+    for (int k = 0; k < 3; ++k)
+    {
+      range[2 * k] = seen[piece] ? std::min(range[2 * k], x[k]) : x[k];
+      range[2 * k + 1] = seen[piece] ? std::max(range[2 * k + 1], x[k]) : x[k];
+    }
+    seen[piece] = 1;
+  }
+  for (size_t i = 0; i < pieces; ++i)
+  {
+    if (!(volume[i] * volume[0] > 0.0))
+    {
+      return false;
+    }
+    for (size_t j = 0; j < pieces; ++j)
+    {
+      const double* inner = pieceBounds.data() + 6 * i;
+      const double* outer = pieceBounds.data() + 6 * j;
+      bool inside = i != j;
+      for (int k = 0; k < 3 && inside; ++k)
+      {
+        inside = inner[2 * k] >= outer[2 * k] && inner[2 * k + 1] <= outer[2 * k + 1];
+      }
+      if (inside)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionSurfaceModel::Alternates(vtkProp* prop)
+{
+  if (vtkRefractionMeshes::IsComposite(prop) || this->AcrossRanks)
+  {
+    return false; // blocks (or ranks' pieces) may nest: not decided
+  }
+  const auto blocks = vtkRefractionMeshes::GetBlocks(prop);
+  if (blocks.size() != 1 || !blocks[0].Mesh)
+  {
+    return false;
+  }
+  vtkPolyData* poly = blocks[0].Mesh;
+  this->GetMesh(poly); // brought up to date
+  Mesh& surface = this->Meshes[poly];
+  if (surface.Alternating < 0)
+  {
+    if (!surface.AskedBefore)
+    {
+      // A mesh that changes every frame (re-contoured data) would pay the pieces' labelling
+      // (about 0.35 us a point on this project's 2-core machine) at every frame, more than
+      // culling saves on a GPU: decided from the second frame the mesh stays the same.
+      surface.AskedBefore = true;
+      return false;
+    }
+    surface.Alternating = surface.Closed && PiecesAlternate(poly) ? 1 : 0;
+  }
+  return surface.Alternating == 1;
 }
 
 //------------------------------------------------------------------------------
@@ -246,31 +435,9 @@ const vtkRefractionSurfaceModel::Mesh& vtkRefractionSurfaceModel::GetMesh(vtkPol
   // 64-bit values per key and wrapping arithmetic: a boundary edge leaves the sum non-zero
   // (but for a chance of 2^-64); a mesh wound inconsistently counts as open. One pass, no edge
   // table: re-contoured data is checked every time step.
-  const double extent = std::max(
-    { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-300 });
-  const vtkIdType numberOfPoints = poly->GetNumberOfPoints();
+  const double extent = Extent(bounds);
   std::vector<std::uint64_t> keys[2];
-  keys[0].resize(numberOfPoints);
-  keys[1].resize(numberOfPoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    double p[3];
-    poly->GetPoint(i, p);
-    std::uint64_t key = 0;
-    for (int k = 0; k < 3; ++k)
-    {
-      const double unit = std::min(std::max((p[k] - bounds[2 * k]) / extent, 0.0), 1.0);
-      key = (key << 21) | static_cast<std::uint64_t>(std::llround(unit * 1048576.0));
-    }
-    for (int salt = 0; salt < 2; ++salt)
-    {
-      std::uint64_t x = key * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(salt + 1);
-      x ^= x >> 31;
-      x *= 0xBF58476D1CE4E5B9ULL;
-      x ^= x >> 29;
-      keys[salt][i] = x;
-    }
-  }
+  PositionKeys(poly, bounds, keys);
   std::uint64_t edgeSum = 0;
   // Boundary edges, whatever the winding: a symmetric function of the ends, XOR-summed over
   // the edges' uses, vanishes when every edge is used an even number of times.
@@ -284,7 +451,7 @@ const vtkRefractionSurfaceModel::Mesh& vtkRefractionSurfaceModel::GetMesh(vtkPol
   // Polygons of no area (repeated or collinear points) cover nothing: their edges are left
   // out of both tests, so degenerate slivers do not make a closed surface open (a genuine
   // surface made partly of such slivers would count as open, and be drawn as a thin sheet).
-  const double minimumArea2 = 1e-24 * extent * extent * extent * extent;
+  const double minimumArea2 = MinimumArea2(extent);
   for (polys->InitTraversal(); polys->GetNextCell(count, ids);)
   {
     if (count < 3)

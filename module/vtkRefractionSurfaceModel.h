@@ -48,6 +48,10 @@ public:
     /// Per point, 1 in a sheet piece: only when the pieces disagree (Mixed()).
     std::vector<unsigned char> PointSheet;
     double SheetBounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 }; ///< of the sheet pieces
+    /// Closed, and every sight line crosses it entering and leaving by turns (Alternates()):
+    /// -1 not decided yet (it is decided when asked), 0 no, 1 yes.
+    int Alternating = -1;
+    bool AskedBefore = false; ///< Alternates() was asked about this mesh's version before
     bool Mixed() const { return this->SheetPieces > 0 && this->SheetPieces < this->Pieces; }
   };
 
@@ -67,6 +71,17 @@ public:
 
   /// One mesh, cached until it is modified.
   const Mesh& GetMesh(vtkPolyData* poly);
+  /// Whether every sight line crosses the prop's surfaces entering and leaving the glass by
+  /// turns, so that PEEL's k-th layer behind the front faces the viewer exactly when k is
+  /// even: one mesh (not composite data), closed and consistently wound, whose connected
+  /// pieces are all wound the same way (their signed volumes) and none of which lies inside
+  /// another's bounds (a piece inside another, wound the same way, is entered twice in a
+  /// row). Decided the second time it is asked about the same version of a mesh (no at the
+  /// first: a mesh that changes every frame is never labelled), then cached with it;
+  /// conservative: pieces side by side whose bounds nest, or more than
+  /// MaximumAlternatingPieces pieces, say no.
+  bool Alternates(vtkProp* prop);
+  static constexpr int MaximumAlternatingPieces = 256;
   /// The prop's meshes together (every block of composite data).
   Prop GetProp(vtkProp* prop);
   /// Forgets the meshes when more than `keep` are cached (entries of polydata that went away).

@@ -325,10 +325,13 @@ bool PiecesAlternate(vtkPolyData* poly)
 //------------------------------------------------------------------------------
 bool vtkRefractionSurfaceModel::Alternates(vtkProp* prop)
 {
-  if (vtkRefractionMeshes::IsComposite(prop) || this->AcrossRanks)
+  if (this->AcrossRanks)
   {
-    return false; // blocks (or ranks' pieces) may nest: not decided
+    return false; // the ranks' pieces are cut open, and may nest across ranks
   }
+  // One mesh: a plain vtkPolyData, or composite data with one visible block that holds
+  // polygons (ParaView hands every dataset to its mapper as composite data). Several blocks
+  // may nest: not decided.
   const auto blocks = vtkRefractionMeshes::GetBlocks(prop);
   if (blocks.size() != 1 || !blocks[0].Mesh)
   {

@@ -73,7 +73,8 @@ public:
   const Mesh& GetMesh(vtkPolyData* poly);
   /// Whether every sight line crosses the prop's surfaces entering and leaving the glass by
   /// turns, so that PEEL's k-th layer behind the front faces the viewer exactly when k is
-  /// even: one mesh (not composite data), closed and consistently wound, whose connected
+  /// even: one mesh (a vtkPolyData, or composite data with one visible block), closed and
+  /// consistently wound, whose connected
   /// pieces are all wound the same way (their signed volumes) and none of which lies inside
   /// another's bounds (a piece inside another, wound the same way, is entered twice in a
   /// row). Decided the second time it is asked about the same version of a mesh (no at the

@@ -39,6 +39,8 @@
 #include <vtkActor.h>
 #include <vtkAppendPolyData.h>
 #include <vtkCleanPolyData.h>
+#include <vtkCompositePolyDataMapper2.h>
+#include <vtkMultiBlockDataSet.h>
 #include <vtkParametricFunctionSource.h>
 #include <vtkParametricTorus.h>
 #include <vtkPolyDataNormals.h>
@@ -536,6 +538,27 @@ int Facing()
   nested->AddInputData(rftest::SpherePoly(middle, 1.0, 96));
   nested->AddInputData(rftest::SpherePoly(middle, 0.55, 64));
   nested->Update();
+  // Composite data as ParaView hands it over: one block (one mesh), or two balls in two
+  // blocks (blocks may nest: both facings).
+  auto compositeActor = [](std::vector<vtkPolyData*> meshes) {
+    vtkNew<vtkMultiBlockDataSet> blocks;
+    blocks->SetNumberOfBlocks(static_cast<unsigned int>(meshes.size()));
+    for (size_t i = 0; i < meshes.size(); ++i)
+    {
+      blocks->SetBlock(static_cast<unsigned int>(i), meshes[i]);
+    }
+    vtkNew<vtkCompositePolyDataMapper2> mapper;
+    mapper->SetInputDataObject(blocks);
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    vtkRefractionPass::MakeGlass(actor, 1.5);
+    return actor;
+  };
+  auto oneBlock = compositeActor({ ringNormals->GetOutput() });
+  oneBlock->RotateX(70.0);
+  auto leftBall = rftest::SpherePoly(left, 0.5, 64);
+  auto rightBall = rftest::SpherePoly(right, 0.6, 64);
+  auto twoBlocks = compositeActor({ leftBall, rightBall });
   struct Case
   {
     const char* Name;
@@ -544,7 +567,8 @@ int Facing()
   };
   const Case cases[] = { { "torus", torus, false }, { "closed torus", closedTorus, true },
     { "two balls", rftest::GlassActor(rftest::Detach(apart->GetOutput()), 1.5), true },
-    { "nested balls", rftest::GlassActor(rftest::Detach(nested->GetOutput()), 1.5), false } };
+    { "nested balls", rftest::GlassActor(rftest::Detach(nested->GetOutput()), 1.5), false },
+    { "torus as one block", oneBlock, true }, { "two balls as two blocks", twoBlocks, false } };
   int wrongCulling = 0;
   int largest = 0;
   std::string report;

@@ -374,10 +374,12 @@ public:
 
   /**
    * PEEL: whether the last frame peeled each layer's one facing only (false before the first
-   * PEEL frame, and with the k-buffer): where one glass actor of one closed mesh is drawn
-   * whose pieces neither nest nor wind against each other, every sight line enters and
-   * leaves it by turns, so each layer behind the front is drawn with the faces of the other
-   * facing culled. The same layers, in about half the fragments.
+   * PEEL frame, with the k-buffer, and on the first frame of each new version of the mesh, so
+   * that a mesh new every frame is never examined): where one glass actor of one closed mesh
+   * (a vtkPolyData, or composite data with one visible block) is drawn whose pieces neither
+   * nest nor wind against each other, every sight line enters and leaves it by turns, so
+   * each layer behind the front is drawn with the faces of the other facing culled. The same
+   * layers, in about half the fragments.
    */
   vtkGetMacro(PeelFacingCulled, bool);
 

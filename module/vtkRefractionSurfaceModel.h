@@ -74,10 +74,9 @@ public:
   /// Whether every sight line crosses the prop's surfaces entering and leaving the glass by
   /// turns, so that PEEL's k-th layer behind the front faces the viewer exactly when k is
   /// even: one mesh (a vtkPolyData, or composite data with one visible block), closed and
-  /// consistently wound, whose connected
-  /// pieces are all wound the same way (their signed volumes) and none of which lies inside
-  /// another's bounds (a piece inside another, wound the same way, is entered twice in a
-  /// row). Decided the second time it is asked about the same version of a mesh (no at the
+  /// consistently wound, whose connected pieces are all wound the same way (their signed
+  /// volumes) and none of which lies inside another's bounds (a piece inside another, wound
+  /// the same way, is entered twice in a row). Decided the second time it is asked about the same version of a mesh (no at the
   /// first: a mesh that changes every frame is never labelled), then cached with it;
   /// conservative: pieces side by side whose bounds nest, or more than
   /// MaximumAlternatingPieces pieces, say no.

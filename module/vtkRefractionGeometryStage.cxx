@@ -40,6 +40,13 @@ bool IsGlassMapper(vtkAbstractMapper* mapper, vtkProp* prop)
 {
   return vtkOpenGLPolyDataMapper::SafeDownCast(mapper) && vtkRefractionGlassKeys::IsGlass(prop);
 }
+
+// Peeled by facing (GetPeelByFacing), whether layer `layer` holds surfaces the ray leaves the
+// glass through: odd layers behind the front, and the furthest; even ones it enters through.
+bool PeelLayerIsLeft(int layer, bool furthest)
+{
+  return furthest || layer % 2 == 1;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -316,7 +323,7 @@ bool vtkRefractionGeometryStage::DrawPeel(vtkOpenGLRenderer* ren, vtkRefractionT
   // through, so its count cannot see the next layer; but wherever it holds glass, a surface
   // to leave through lies behind it: the next layer is there if this one is. A layer left
   // through (odd) keeps two surfaces at a pixel exactly where one is entered between them.
-  const bool entered = this->PeelByFacing && !furthest && layer % 2 == 0;
+  const bool entered = this->PeelByFacing && !PeelLayerIsLeft(layer, furthest);
   this->DrawIntoTargets(ren, targets, { vtkRefractionTargets::PEEL_1 + layer - 1 },
     vtkRefractionTargets::PEEL_Z, furthest ? 0.0 : 1.0, furthest ? GL_GREATER : GL_LESS,
     STAGE_PEEL, askWhetherEmpty ? this->PeelQuery : 0, entered ? nullptr : behind);
@@ -789,7 +796,7 @@ void vtkRefractionGeometryStage::CullHiddenFaces(vtkProp* prop)
   // VTK's edges of the back faces show at the silhouette, and an opaque actor shows them.
   if (this->State && this->Stage == STAGE_PEEL && this->PeelByFacing && this->PeelLayer > 0)
   {
-    const bool leaving = this->PeelFurthest || this->PeelLayer % 2 == 1;
+    const bool leaving = PeelLayerIsLeft(this->PeelLayer, this->PeelFurthest);
     this->State->vtkglEnable(GL_CULL_FACE);
     this->State->vtkglCullFace(leaving == this->IsOutwardFront(prop) ? GL_FRONT : GL_BACK);
     return;

@@ -91,6 +91,54 @@ bool vtkRefractionLayerPack::Pack(
   {
     texture->Deactivate();
   }
+  return this->Stack(renWin, targets, found);
+}
+
+//------------------------------------------------------------------------------
+bool vtkRefractionLayerPack::Stack(
+  vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int found)
+{
+  if (!this->StackQuad)
+  {
+    this->StackQuad.reset(new vtkOpenGLQuadHelper(renWin,
+      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), rfLayerStackFSSource,
+      ""));
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(this->StackQuad->Program);
+  }
+  vtkShaderProgram* program = this->StackQuad->Program;
+  vtkTextureObject* stack = targets->Get(vtkRefractionTargets::PEEL_STACK);
+  const int columns = targets->GetPeelStackColumns();
+  if (!program || !program->GetCompiled() || !stack || columns < 1)
+  {
+    vtkErrorMacro("Could not build the layer stacking shader or its target; the glass is not "
+                  "refracted.");
+    this->StackQuad.reset();
+    return false;
+  }
+  vtkOpenGLState* ostate = renWin->GetState();
+  vtkRefractionTargetDraw draw(renWin, targets, { stack }, nullptr);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  vtkTextureObject* front = targets->Get(vtkRefractionTargets::FRONT_SURFACE);
+  const int width = static_cast<int>(front->GetWidth());
+  const int height = static_cast<int>(front->GetHeight());
+  for (int layer = 0; layer < found; ++layer)
+  {
+    vtkTextureObject* texture = targets->Get(
+      layer == 0 ? vtkRefractionTargets::FRONT_SURFACE : vtkRefractionTargets::PEEL_1 + layer - 1);
+    const int x = (layer % columns) * width;
+    const int y = (layer / columns) * height;
+    ostate->vtkglViewport(x, y, width, height);
+    ostate->vtkglScissor(x, y, width, height);
+    texture->Activate();
+    program->SetUniformi("rfLayer", texture->GetTextureUnit());
+    this->StackQuad->Render();
+    texture->Deactivate();
+  }
   return true;
 }
 
@@ -103,4 +151,9 @@ void vtkRefractionLayerPack::ReleaseGraphicsResources(vtkWindow* w)
     this->Quad.reset();
   }
   this->QuadLayers = 0;
+  if (this->StackQuad)
+  {
+    this->StackQuad->ReleaseGraphicsResources(w);
+    this->StackQuad.reset();
+  }
 }

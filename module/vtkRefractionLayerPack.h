@@ -1,11 +1,14 @@
 /**
  * @class   vtkRefractionLayerPack
- * @brief   PEEL: the depths of the peeled layers packed four to a texel.
+ * @brief   PEEL: the peeled layers laid out for the shading's reads.
  *
- * An image-space stage of vtkRefractionPass (shaders/rfLayerPackFS.glsl) run after the
- * peeling: it reads the depth of each of the K layers (the front G-buffer and PEEL_1 ..
- * PEEL_{K-1}) and writes them into PEEL_DEPTHS_A (layers 0-3) and PEEL_DEPTHS_B (4-7), so that
- * each step of PEEL's ray march reads one or two texels instead of K.
+ * An image-space stage of vtkRefractionPass run after the peeling. It reads the depth of each
+ * of the K layers (the front G-buffer and PEEL_1 .. PEEL_{K-1}) and writes them into
+ * PEEL_DEPTHS_A (layers 0-3) and PEEL_DEPTHS_B (4-7) (shaders/rfLayerPackFS.glsl), so that each
+ * step of PEEL's ray march reads one or two texels instead of K. It then copies each layer
+ * found into its place in PEEL_STACK (shaders/rfLayerStackFS.glsl), so that the shading reads
+ * a layer's whole texel (normal, depth, material) in one fetch: through a sampler per layer,
+ * llvmpipe (and a GPU's warp whose pixels want different layers) fetched every layer's.
  */
 #ifndef vtkRefractionLayerPack_h
 #define vtkRefractionLayerPack_h
@@ -27,8 +30,8 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Packs the depths of `layers` layers (2..8), of which the first `found` were drawn this
-  /// frame (the others are written empty, whatever their targets hold); false when the
-  /// shader cannot be built.
+  /// frame (the others are written empty, whatever their targets hold), and stacks the layers
+  /// found; false when a shader cannot be built.
   bool Pack(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int layers, int found);
 
   void ReleaseGraphicsResources(vtkWindow* w);
@@ -41,8 +44,11 @@ private:
   vtkRefractionLayerPack(const vtkRefractionLayerPack&) = delete;
   void operator=(const vtkRefractionLayerPack&) = delete;
 
+  bool Stack(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int found);
+
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   int QuadLayers = 0;
+  std::unique_ptr<vtkOpenGLQuadHelper> StackQuad;
 };
 
 #endif

@@ -65,6 +65,7 @@ void vtkRefractionMethod::AddTargets(std::vector<bool>& wanted, vtkRefractionPas
   wanted[vtkRefractionTargets::PEEL_Z] = layers > 1;
   wanted[vtkRefractionTargets::PEEL_DEPTHS_A] = layers > 1;
   wanted[vtkRefractionTargets::PEEL_DEPTHS_B] = layers > 4;
+  wanted[vtkRefractionTargets::PEEL_STACK] = layers > 1;
   wanted[vtkRefractionTargets::FRONT_SH] = this->NeedsSHTransfer();
 }
 

@@ -48,6 +48,7 @@ const TargetFormat kFormats[vtkRefractionTargets::TARGET_COUNT] = {
   { "peeled depths 0-3", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "peeled depths 4-7", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "peel slots", 1, GL_R32UI, GL_RED_INTEGER, vtkTextureObject::Nearest },
+  { "peeled layers stacked", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "front SH exit", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "debug P2", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
   { "debug T2", 4, GL_RGBA32F, GL_RGBA, vtkTextureObject::Nearest },
@@ -166,10 +167,24 @@ void vtkRefractionTargets::Allocate(vtkOpenGLRenderWindow* renWin, int target)
     // PEEL's slots, and one row more for the count of layers found (its first texel); the
     // coarse shading's targets, a texel per 2x2 block of pixels.
     const bool coarse = target == COARSE_COLOR || target == COARSE_RAY;
-    const int columns = coarse ? (this->Width + 1) / 2 : this->Width;
-    const int rows = target == PEEL_SLOTS ? this->Height * this->PeelSlots + 1
-      : coarse                            ? (this->Height + 1) / 2
-                                          : this->Height;
+    int columns = coarse ? (this->Width + 1) / 2 : this->Width;
+    int rows = target == PEEL_SLOTS ? this->Height * this->PeelSlots + 1
+      : coarse                      ? (this->Height + 1) / 2
+                                    : this->Height;
+    if (target == PEEL_STACK)
+    {
+      // As many layers to a row as the largest texture is wide: a stack of K layers one above
+      // the other is too tall at 3840x2160 with 8 layers (17,280 rows against llvmpipe's
+      // 16,384).
+      GLint largest = 0;
+      glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
+      const int layers = this->PeelSlots + 1;
+      int stackColumns = this->Width > 0 ? static_cast<int>(largest) / this->Width : 1;
+      stackColumns = stackColumns < 1 ? 1 : stackColumns > layers ? layers : stackColumns;
+      this->PeelStackColumns = stackColumns;
+      columns = this->Width * stackColumns;
+      rows = this->Height * ((layers + stackColumns - 1) / stackColumns);
+    }
     this->Targets[target] = MakeColorTexture(
       renWin, columns, rows, f.Components, f.InternalFormat, f.Format, f.Filter);
   }
@@ -228,12 +243,21 @@ vtkRefractionTargets::ScopedMipmaps::~ScopedMipmaps()
 void vtkRefractionTargets::SetPeelSlots(int slots)
 {
   slots = slots < 1 ? 1 : slots;
-  if (slots != this->PeelSlots && this->Targets[PEEL_SLOTS])
+  if (slots != this->PeelSlots)
   {
-    this->Targets[PEEL_SLOTS] = nullptr; // released with its context by its destructor
-    this->TargetBytes[PEEL_SLOTS] = 0;
+    for (int target : { PEEL_SLOTS, PEEL_STACK })
+    {
+      this->Targets[target] = nullptr; // released with its context by its destructor
+      this->TargetBytes[target] = 0;
+    }
   }
   this->PeelSlots = slots;
+}
+
+//------------------------------------------------------------------------------
+int vtkRefractionTargets::GetPeelStackColumns() const
+{
+  return this->Targets[PEEL_STACK] ? this->PeelStackColumns : 0;
 }
 
 //------------------------------------------------------------------------------

@@ -4,27 +4,9 @@
 // (module/core/kernel/rf_kernel_peel.h, the same source the C core and its tests run). This
 // file provides the lookups the kernel leaves to the stage (rfKernelPrelude.glsl).
 // Defines: RF_PEEL_LAYERS (K), RF_PEEL_BOUNCES (B, total internal reflections followed).
-#if RF_PEEL_LAYERS > 1
-uniform sampler2D rfPeel1;
-#endif
-#if RF_PEEL_LAYERS > 2
-uniform sampler2D rfPeel2;
-#endif
-#if RF_PEEL_LAYERS > 3
-uniform sampler2D rfPeel3;
-#endif
-#if RF_PEEL_LAYERS > 4
-uniform sampler2D rfPeel4;
-#endif
-#if RF_PEEL_LAYERS > 5
-uniform sampler2D rfPeel5;
-#endif
-#if RF_PEEL_LAYERS > 6
-uniform sampler2D rfPeel6;
-#endif
-#if RF_PEEL_LAYERS > 7
-uniform sampler2D rfPeel7;
-#endif
+// The K layers' texels side by side (vtkRefractionTargets::PEEL_STACK): layer k at column
+// k % columns, row k / columns of layers, each the size of the front G-buffer.
+uniform sampler2D rfPeelStack;
 uniform sampler2D rfPeelDepthsA;
 #if RF_PEEL_LAYERS > 4
 uniform sampler2D rfPeelDepthsB;
@@ -39,63 +21,20 @@ uniform int rfPeelLayersFound;
 
 vec4 rfPeelLayerTexel(ivec2 texel, int layer)
 {
-  if (layer >= rfPeelLayersFound)
-  {
-    return vec4(0.0);
-  }
-  // The front G-buffer's material (w) is positive: the nearest surface faces the viewer.
-  if (layer == 0)
-  {
-    return texelFetch(rfFrontSurface, texel, 0);
-  }
-#if RF_PEEL_LAYERS > 1
-  if (layer == 1)
-  {
-    return texelFetch(rfPeel1, texel, 0);
-  }
-#endif
-#if RF_PEEL_LAYERS > 2
-  if (layer == 2)
-  {
-    return texelFetch(rfPeel2, texel, 0);
-  }
-#endif
-#if RF_PEEL_LAYERS > 3
-  if (layer == 3)
-  {
-    return texelFetch(rfPeel3, texel, 0);
-  }
-#endif
-#if RF_PEEL_LAYERS > 4
-  if (layer == 4)
-  {
-    return texelFetch(rfPeel4, texel, 0);
-  }
-#endif
-#if RF_PEEL_LAYERS > 5
-  if (layer == 5)
-  {
-    return texelFetch(rfPeel5, texel, 0);
-  }
-#endif
-#if RF_PEEL_LAYERS > 6
-  if (layer == 6)
-  {
-    return texelFetch(rfPeel6, texel, 0);
-  }
-#endif
-#if RF_PEEL_LAYERS > 7
-  if (layer == 7)
-  {
-    return texelFetch(rfPeel7, texel, 0);
-  }
-#endif
-  return vec4(0.0);
+  // One fetch whatever the layer: read through a sampler per layer, llvmpipe ran every
+  // layer's branch, K fetches at each of the five texels a crossing reads (its own and the
+  // normal filter's four).
+  ivec2 size = textureSize(rfFrontSurface, 0);
+  int columns = textureSize(rfPeelStack, 0).x / size.x;
+  int place = clamp(layer, 0, RF_PEEL_LAYERS - 1);
+  vec4 stored =
+    texelFetch(rfPeelStack, texel + size * ivec2(place % columns, place / columns), 0);
+  return layer >= 0 && layer < rfPeelLayersFound ? stored : vec4(0.0);
 }
 
 // The depth of one layer at a texel, from the depths packed four to a texel: one fetch, where
-// rfPeelLayerTexel goes through every layer's sampler (llvmpipe runs every branch). The packing
-// wrote the layers not drawn this frame as empty, as rfPeelLayerTexel reads them.
+// rfPeelLayerTexel reads the whole texel. The packing wrote the layers not drawn this frame as
+// empty, as rfPeelLayerTexel reads them.
 float rfPeelLayerDepth(ivec2 texel, int layer)
 {
 #if RF_PEEL_LAYERS > 4

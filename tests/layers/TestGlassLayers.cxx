@@ -26,6 +26,13 @@
 //                inside a ball (and taken out again) and a torus with bounces: the same
 //                pictures to the bit, the same layers found, the slots' bytes counted, no
 //                message
+//   stack        the layers' stack (vtkRefractionTargets::PEEL_STACK) in two rows of layers:
+//                a window wider than the largest texture over K, four nested balls filling
+//                all K = 8 layers; its middle must show the square window's picture, and a
+//                stack laid out wrongly reads other layers there
+// First: glew must come before any header that includes gl.h.
+#include <vtk_glew.h>
+
 #include "vtkRefractionPass.h"
 #include "vtkRefractionReference.h"
 #include "rf_metrics.h"
@@ -491,6 +498,68 @@ int KBuffer()
   return EXIT_SUCCESS;
 }
 
+// The layers' stack in two rows: PEEL_STACK holds as many layers side by side as the largest
+// texture is wide (at 2560 x 1440 with 8 layers, six: layers 6 and 7 go in a second row). A
+// window wider than that over K, but as tall as the square one, sees the same scene in its
+// middle (VTK's view angle is vertical), so the middle must show the square window's picture;
+// only the search lengths, cut at the wider frustum, differ.
+int Stack()
+{
+  vtkNew<rftest::MessageLog> log;
+  vtkOutputWindow::SetInstance(log);
+  Scene scene;
+  const double radii[4] = { 1.0, 0.75, 0.5, 0.25 };
+  const double indices[4] = { 1.33, 1.5, 1.7, 1.9 };
+  for (int i = 0; i < 4; ++i)
+  {
+    AddBall(scene, 0.0, 0.0, 0.0, radii[i], indices[i]);
+  }
+  scene.Pass->SetMethod(vtkRefractionPass::PEEL);
+  scene.Pass->SetPeelLayers(8);
+  scene.Pass->SetPeelCapture(vtkRefractionPass::PEEL_CAPTURE_DEPTH_PEELING);
+  auto square = scene.Render();
+  const int squareFound = scene.Pass->GetPeelLayersFound();
+  scene.Window->MakeCurrent();
+  GLint largest = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
+  // Fewer than 8 layers to a row, and the middle on whole pixels.
+  const int width = (static_cast<int>(largest) / 8 + 64) / 2 * 2;
+  scene.Window->SetSize(width, kSize);
+  auto wide = scene.Render();
+  const int wideFound = scene.Pass->GetPeelLayersFound();
+  const int left = (width - kSize) / 2;
+  int changed = 0;
+  int worst = 0;
+  for (int y = 0; y < kSize; ++y)
+  {
+    for (int x = 0; x < kSize; ++x)
+    {
+      int d = 0;
+      for (int c = 0; c < 3; ++c)
+      {
+        d = std::max(d,
+          std::abs(static_cast<int>(square->GetScalarComponentAsDouble(x, y, 0, c)) -
+            static_cast<int>(wide->GetScalarComponentAsDouble(left + x, y, 0, c))));
+      }
+      changed += d > 24 ? 1 : 0;
+      worst = std::max(worst, d);
+    }
+  }
+  vtkOutputWindow::SetInstance(nullptr);
+  std::printf("stack: largest texture %d, window %d x %d (%d layers to a row); layers found %d "
+              "(square) and %d (wide); pixels of the middle more than 24 levels from the "
+              "square picture: %d of %d (largest difference %d); %d errors, %d warnings\n",
+    static_cast<int>(largest), width, kSize, static_cast<int>(largest) / width, squareFound,
+    wideFound, changed, kSize * kSize, worst, log->Count("error"), log->Count("warning"));
+  RF_REQUIRE(squareFound == 8 && wideFound == 8,
+    "layers found: %d and %d (8 expected, so that the second row of the stack is read)", squareFound,
+    wideFound);
+  RF_REQUIRE(changed <= kSize * kSize / 200, "%d pixels differ from the square picture",
+    changed);
+  RF_REQUIRE(log->Count("error") == 0 && log->Count("warning") == 0, "messages were reported");
+  return EXIT_SUCCESS;
+}
+
 // PEEL's layers drawn one facing at a time (vtkRefractionPass::GetPeelFacingCulled) where a
 // single closed mesh is entered and left by turns, and both facings where not: each scene
 // peeled with K = 4 and 8 (and TIR followed, so that the deeper layers are used) must show
@@ -646,7 +715,12 @@ int main(int argc, char* argv[])
   {
     return KBuffer();
   }
-  std::fprintf(stderr, "usage: TestGlassLayers overlapping|nested|nested_contour|tir|k2_dir|deep|k_buffer "
+  if (name == "stack")
+  {
+    return Stack();
+  }
+  std::fprintf(stderr, "usage: TestGlassLayers overlapping|nested|nested_contour|tir|k2_dir|deep|k_buffer|"
+                       "facing|stack "
                        "[-V baseline -T folder]\n");
   return EXIT_FAILURE;
 }

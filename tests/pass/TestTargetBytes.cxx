@@ -8,8 +8,8 @@
 // = 20; ISR's d_N R32F = 4; SSP's scene copy RGBA8 = 4; DIR's
 // reduction chain RG32F = 8 per texel of each level, each a quarter of the one before on
 // each side (blocks of 4 x 4 texels, rounded up); PEEL's K - 1 peeled layers RGBA32F
-// and their DEPTH32F = 16 (K - 1) + 4, and the layers' depths packed into RGBA32F, one for
-// K <= 4, two above; anti-aliasing's corner depth buffer DEPTH32F = 4; the debug output
+// and their DEPTH32F = 16 (K - 1) + 4, the layers' depths packed into RGBA32F, one for
+// K <= 4, two above, and all K layers stacked for the shading, RGBA32F = 16 K; anti-aliasing's corner depth buffer DEPTH32F = 4; the debug output
 // 2 x RGBA32F. In a multisampled window (VTK's default) the glass colour also has its mipmap
 // levels 1 and 2 (each side halved, rounded down), which the composite at the window's samples
 // reads at the silhouette; a single-sampled window has none.
@@ -97,11 +97,11 @@ int main()
     { vtkRefractionPass::SSP, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "SSP",
       frontUntinted + 4 * pixels },
     { vtkRefractionPass::PEEL, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "PEEL (K = 4)",
-      front + 68 * pixels },
+      front + 132 * pixels },
     { vtkRefractionPass::PEEL, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "PEEL (K = 8)",
-      front + 148 * pixels, 8 },
+      front + 276 * pixels, 8 },
     { vtkRefractionPass::PEEL, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "PEEL (K = 2)",
-      front + 36 * pixels, 2 },
+      front + 68 * pixels, 2 },
     { vtkRefractionPass::DIR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, true, "DIR, debug",
       front + back + reduction + 32 * pixels },
     { vtkRefractionPass::DIR, vtkRefractionPass::DEPTH_RANGE_REDUCTION, false, "DIR, AA",

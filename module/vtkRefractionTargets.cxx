@@ -184,6 +184,15 @@ void vtkRefractionTargets::Allocate(vtkOpenGLRenderWindow* renWin, int target)
       this->PeelStackColumns = stackColumns;
       columns = this->Width * stackColumns;
       rows = this->Height * ((layers + stackColumns - 1) / stackColumns);
+      if (rows > static_cast<int>(largest))
+      {
+        // Left unallocated: vtkRefractionLayerPack reports it and PEEL does not refract.
+        vtkErrorMacro("PEEL's " << layers << " layers of " << this->Width << " x "
+                                << this->Height << " do not fit the largest texture ("
+                                << largest << " texels a side)");
+        this->TargetBytes[target] = 0;
+        return;
+      }
     }
     this->Targets[target] = MakeColorTexture(
       renWin, columns, rows, f.Components, f.InternalFormat, f.Format, f.Filter);

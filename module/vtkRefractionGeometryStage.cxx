@@ -347,13 +347,16 @@ int vtkRefractionGeometryStage::DrawPeelLayers(
 {
   this->PeelDraws = 0;
   this->PeelByFacing = false;
+  // Several props may overlap or nest (a ball in a ball is entered twice in a row). Asked with
+  // the k-buffer too, so that AUTO can leave it for peeling by facing.
+  this->PeelFacingPossible =
+    this->Glass.size() == 1 && this->SurfaceModel->Alternates(this->Glass[0]);
   if (this->PeelKBufferConfigured == layers && targets->Get(vtkRefractionTargets::PEEL_SLOTS))
   {
     this->PeelDraws = 2;
     return this->DrawPeelKBuffer(ren, targets, layers);
   }
-  // Several props may overlap or nest (a ball in a ball is entered twice in a row).
-  this->PeelByFacing = this->Glass.size() == 1 && this->SurfaceModel->Alternates(this->Glass[0]);
+  this->PeelByFacing = this->PeelFacingPossible;
   for (int layer = 1; layer < layers; ++layer)
   {
     ++this->PeelDraws;

@@ -98,6 +98,9 @@ public:
   /// (vtkRefractionSurfaceModel::Alternates), so that layer k behind the front is a surface
   /// the ray leaves through when k is odd (or the furthest), one it enters when k is even.
   bool GetPeelByFacing() const { return this->PeelByFacing; }
+  /// Whether the last DrawPeelLayers' glass could be peeled one facing at a time, whichever
+  /// capture drew it (the k-buffer keeps both facings): what AUTO chooses the capture by.
+  bool GetPeelFacingPossible() const { return this->PeelFacingPossible; }
   /// Whether this context can sort `layers` layers of `height` rows with image atomics (GL
   /// 4.2's image load/store and 3.3's float bits, or their ARB extensions), with K image
   /// units for the fragment shader and a texture (K - 1) times the height, plus one row.
@@ -230,6 +233,7 @@ private:
   vtkNew<vtkRefractionPeelCount> PeelCount; ///< whether a layer can follow (DrawPeel)
   int PeelDraws = 0;                        ///< GetPeelDraws
   bool PeelByFacing = false;                ///< GetPeelByFacing
+  bool PeelFacingPossible = false;          ///< GetPeelFacingPossible
   int PeelLayer = 0;         ///< the layer DrawPeel draws (0: none)
   bool PeelFurthest = false; ///< it keeps the furthest surface behind the one before
   bool Parallel = false;

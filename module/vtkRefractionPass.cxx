@@ -117,6 +117,7 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PeelLayersFound: " << this->PeelLayersFound << "\n";
   os << indent << "PeelLayersDrawn: " << this->PeelLayersDrawn << "\n";
   os << indent << "PeelFacingCulled: " << this->PeelFacingCulled << "\n";
+  os << indent << "PeelFacingPossible: " << this->PeelFacingPossible << "\n";
   os << indent << "PeelCapture: " << this->PeelCapture << "\n";
   os << indent << "SHSmoothing: " << this->SHSmoothing << "\n";
   os << indent << "EnvironmentMode: "
@@ -401,12 +402,13 @@ void vtkRefractionPass::RenderGlass(
   method->AddTargets(wanted, this);
   const int peelLayers = method->GetPeelLayers(this);
   // AUTO: the k-buffer's fixed cost (its clears, two draws of every fragment with atomics)
-  // beats peeling on llvmpipe only where many layers are drawn (SetPeelCapture). Not across
-  // ranks, where every layer is drawn and no test runs the k-buffer yet.
+  // beats peeling on llvmpipe only where many layers are drawn (SetPeelCapture), and not
+  // where the layers can be peeled one facing at a time, each draw half the fragments. Not
+  // across ranks, where every layer is drawn and no test runs the k-buffer yet.
   const bool peelKBuffer = peelLayers > 2 &&
     (this->PeelCapture == PEEL_CAPTURE_K_BUFFER ||
       (this->PeelCapture == PEEL_CAPTURE_AUTO && !exchange && peelLayers >= 6 &&
-        this->PeelLayersFound > 3)) &&
+        this->PeelLayersFound > 3 && !this->PeelFacingPossible)) &&
     vtkRefractionGeometryStage::SupportsPeelKBuffer(renWin, this->Height, peelLayers);
   wanted[vtkRefractionTargets::PEEL_SLOTS] = peelKBuffer;
   this->Targets->SetPeelSlots(peelLayers - 1);
@@ -557,6 +559,7 @@ void vtkRefractionPass::RenderGlass(
         this->GeometryStage->DrawPeelLayers(ren, this->Targets, peelLayers, true);
       this->PeelLayersDrawn = this->GeometryStage->GetPeelDraws();
       this->PeelFacingCulled = this->GeometryStage->GetPeelByFacing();
+      this->PeelFacingPossible = this->GeometryStage->GetPeelFacingPossible();
     }
     const bool packed =
       this->LayerPack->Pack(renWin, this->Targets, peelLayers, this->PeelLayersFound);

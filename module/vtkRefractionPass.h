@@ -345,12 +345,16 @@ public:
    * sorts each pixel's nearest depths behind the front into K - 1 slots with image atomics
    * (4 more bytes per slot and pixel), the second writes each layer's normal and material.
    * The same layers, so the same pictures. AUTO (default): the k-buffer with 6 or more layers
-   * where the last PEEL frame found more than 3 holding glass (in one process: across MPI
-   * ranks only K_BUFFER asks for it), peeling otherwise. Measured on
-   * llvmpipe, 2 cores, VTK's default window at 512x512 (docs/benchmark.md): PEEL 8 on the
-   * bunny 6.9 -> 4.6 times plain VTK, on the nested contours 7.6 -> 6.2, on the sphere (two
-   * layers, where peeling stops after one draw) 4.8 -> 5.5; with 4 layers the two read alike.
-   * Not measured on a GPU, where the draws saved weigh more and the atomics less.
+   * where the last PEEL frame found more than 3 holding glass and its glass could not be
+   * peeled one facing at a time (GetPeelFacingCulled; in one process: across MPI ranks only
+   * K_BUFFER asks for it), peeling otherwise. Peeling by facing drew PEEL 8's layers in
+   * 64-74 ms on the isosurface against the k-buffer's 89-102, and alike on the bunny
+   * (llvmpipe, single-sampled 512x512; docs/benchmark.md, *The k-buffer left where the
+   * layers can be peeled by facing*). Against peeling both facings (llvmpipe, 2 cores, VTK's
+   * default window at 512x512): PEEL 8 on the bunny 6.9 -> 4.6 times plain VTK, on the nested
+   * contours 7.6 -> 6.2, on the sphere (two layers, where peeling stops after one draw)
+   * 4.8 -> 5.5; with 4 layers the two read alike. Not measured on a GPU, where the draws saved
+   * weigh more and the atomics less.
    */
   vtkSetClampMacro(PeelCapture, int, PEEL_CAPTURE_AUTO, PEEL_CAPTURE_K_BUFFER);
   vtkGetMacro(PeelCapture, int);
@@ -673,6 +677,7 @@ protected:
   int PeelLayersFound = 0;
   int PeelLayersDrawn = 0;
   bool PeelFacingCulled = false;
+  bool PeelFacingPossible = false; // the last PEEL frame's glass could be peeled by facing
   double SHSmoothing = 5.0;
   bool Fresnel = true;
   bool FilteredLookups = true;

@@ -639,6 +639,7 @@ int Facing()
     { "nested balls", rftest::GlassActor(rftest::Detach(nested->GetOutput()), 1.5), false },
     { "torus as one block", oneBlock, true }, { "two balls as two blocks", twoBlocks, false } };
   int wrongCulling = 0;
+  int wrongAuto = 0;
   int largest = 0;
   std::string report;
   for (const Case& c : cases)
@@ -666,6 +667,18 @@ int Facing()
         (culled ? "culled" : "both faces") + ", " + std::to_string(found) + " layers, " +
         std::to_string(difference) + ";";
     }
+    // AUTO with 8 layers: the k-buffer where more than 3 layers are found and the glass keeps
+    // both facings, peeling by facing where it can (it drew PEEL 8's layers faster than the
+    // k-buffer on llvmpipe: docs/benchmark.md).
+    scene.Pass->SetPeelCapture(vtkRefractionPass::PEEL_CAPTURE_AUTO);
+    scene.Window->Render();
+    scene.Window->Render();
+    const int autoFound = scene.Pass->GetPeelLayersFound();
+    const bool autoCulled = scene.Pass->GetPeelFacingCulled();
+    // Two draws with more than three layers found: the k-buffer (peeling draws one a layer).
+    const bool autoKBuffer = scene.Pass->GetPeelLayersDrawn() == 2 && autoFound > 3;
+    wrongAuto += autoCulled != c.Culled || autoKBuffer != (!c.Culled && autoFound > 3) ? 1 : 0;
+    report += std::string(" AUTO ") + (autoKBuffer ? "k-buffer" : "peeled") + ";";
     scene.Renderer->RemoveActor(c.Actor);
   }
   vtkOutputWindow::SetInstance(nullptr);
@@ -675,6 +688,7 @@ int Facing()
   RF_REQUIRE(wrongCulling == 0, "%d frames culled where they should not, or not where they could",
     wrongCulling);
   RF_REQUIRE(largest == 0, "peeling by facing differs from the k-buffer's layers (%d)", largest);
+  RF_REQUIRE(wrongAuto == 0, "AUTO chose the wrong capture for %d meshes", wrongAuto);
   RF_REQUIRE(log->Count("error") == 0 && log->Count("warning") == 0, "messages were reported");
   return EXIT_SUCCESS;
 }

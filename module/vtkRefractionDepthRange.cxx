@@ -11,6 +11,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkProp.h"
+#include "vtkRefractionQuad.h"
 #include "vtkRefractionTargetDraw.h"
 #include "vtkRefractionTargets.h"
 #include "vtkRenderer.h"
@@ -106,19 +107,18 @@ bool vtkRefractionDepthRange::Reduce(
 vtkShaderProgram* vtkRefractionDepthRange::ReadyProgram(
   vtkOpenGLRenderWindow* renWin, std::unique_ptr<vtkOpenGLQuadHelper>& quad, bool firstLevel)
 {
-  if (!quad)
+  std::string source;
+  if (!quad) // the source only when the program is made
   {
-    std::string source = rfReductionFSSource;
+    source = rfReductionFSSource;
     std::ostringstream defines;
     defines << "//VTK::System::Dec\n#define RF_REDUCTION_BLOCK "
             << vtkRefractionTargets::ReductionBlock << "\n"
             << (firstLevel ? "#define RF_REDUCTION_FIRST\n" : "");
     vtkShaderProgram::Substitute(source, "//VTK::System::Dec", defines.str());
-    quad.reset(new vtkOpenGLQuadHelper(renWin,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str(), ""));
   }
-  vtkShaderProgram* program = quad->Program;
-  return program && program->GetCompiled() ? program : nullptr;
+  return vtkRefractionQuad::Ready(renWin, quad,
+    vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str());
 }
 
 //------------------------------------------------------------------------------

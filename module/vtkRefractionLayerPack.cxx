@@ -4,8 +4,8 @@
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkRefractionQuad.h"
 #include "vtkRefractionTargetDraw.h"
 #include "vtkRefractionTargets.h"
 #include "vtkShaderProgram.h"
@@ -39,28 +39,24 @@ bool vtkRefractionLayerPack::Pack(
   {
     return false;
   }
-  if (!this->Quad || this->QuadLayers != layers)
+  if (this->Quad && this->QuadLayers != layers)
   {
-    if (this->Quad)
-    {
-      this->Quad->ReleaseGraphicsResources(renWin);
-    }
-    std::string source = rfLayerPackFSSource;
+    this->Quad->ReleaseGraphicsResources(renWin);
+    this->Quad.reset();
+  }
+  std::string source;
+  if (!this->Quad) // the source only when the program is made
+  {
+    source = rfLayerPackFSSource;
     vtkShaderProgram::Substitute(source, "in vec2 texCoord;",
       "in vec2 texCoord;\n#define RF_PEEL_LAYERS " + std::to_string(layers) + "\n");
-    this->Quad.reset(new vtkOpenGLQuadHelper(renWin,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str(), ""));
-    this->QuadLayers = layers;
   }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-  }
-  vtkShaderProgram* program = this->Quad->Program;
-  if (!program || !program->GetCompiled())
+  this->QuadLayers = layers;
+  vtkShaderProgram* program = vtkRefractionQuad::Ready(renWin, this->Quad,
+    vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str());
+  if (!program)
   {
     vtkErrorMacro("Could not build the layer packing shader; the glass is not refracted.");
-    this->Quad.reset();
     return false;
   }
   program->SetUniformi("rfLayersFound", found);
@@ -98,24 +94,18 @@ bool vtkRefractionLayerPack::Pack(
 bool vtkRefractionLayerPack::Stack(
   vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int found)
 {
-  if (!this->StackQuad)
-  {
-    this->StackQuad.reset(new vtkOpenGLQuadHelper(renWin,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), rfLayerStackFSSource,
-      ""));
-  }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->StackQuad->Program);
-  }
-  vtkShaderProgram* program = this->StackQuad->Program;
+  vtkShaderProgram* program = vtkRefractionQuad::Ready(renWin, this->StackQuad,
+    vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), rfLayerStackFSSource);
   vtkTextureObject* stack = targets->Get(vtkRefractionTargets::PEEL_STACK);
-  const int columns = targets->GetPeelStackColumns();
-  if (!program || !program->GetCompiled() || !stack || columns < 1)
+  vtkTextureObject* front = targets->Get(vtkRefractionTargets::FRONT_SURFACE);
+  const int width = front ? static_cast<int>(front->GetWidth()) : 0;
+  const int height = front ? static_cast<int>(front->GetHeight()) : 0;
+  // Layers side by side as the stack is wide (vtkRefractionTargets), as the shading reads it.
+  const int columns = stack && width > 0 ? static_cast<int>(stack->GetWidth()) / width : 0;
+  if (!program || columns < 1)
   {
     vtkErrorMacro("Could not build the layer stacking shader or its target; the glass is not "
                   "refracted.");
-    this->StackQuad.reset();
     return false;
   }
   vtkOpenGLState* ostate = renWin->GetState();
@@ -123,9 +113,6 @@ bool vtkRefractionLayerPack::Stack(
   ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   ostate->vtkglDisable(GL_BLEND);
   ostate->vtkglDisable(GL_DEPTH_TEST);
-  vtkTextureObject* front = targets->Get(vtkRefractionTargets::FRONT_SURFACE);
-  const int width = static_cast<int>(front->GetWidth());
-  const int height = static_cast<int>(front->GetHeight());
   for (int layer = 0; layer < found; ++layer)
   {
     vtkTextureObject* texture = targets->Get(

@@ -4,8 +4,8 @@
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkRefractionQuad.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
@@ -73,17 +73,9 @@ bool vtkRefractionPeelCount::Finish(vtkOpenGLRenderWindow* renWin)
   this->Counting = false;
   vtkOpenGLState* ostate = renWin->GetState();
   GLuint anyTwice = 1;
-  if (!this->Quad)
-  {
-    this->Quad.reset(new vtkOpenGLQuadHelper(renWin,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), rfKeptTwiceFSSource,
-      ""));
-  }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-  }
-  const bool built = this->Quad->Program && this->Quad->Program->GetCompiled();
+  const bool built = vtkRefractionQuad::Ready(renWin, this->Quad,
+                       vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(),
+                       rfKeptTwiceFSSource) != nullptr;
   if (built)
   {
     if (this->Query == 0)
@@ -104,7 +96,6 @@ bool vtkRefractionPeelCount::Finish(vtkOpenGLRenderWindow* renWin)
   else
   {
     vtkErrorMacro("Could not build PEEL's layer count shader; every layer is peeled.");
-    this->Quad.reset();
   }
   ostate->vtkglStencilFunc(this->SavedFunc[0], this->SavedFunc[1],
     static_cast<unsigned int>(this->SavedFunc[2]));

@@ -4,9 +4,9 @@
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
-#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkRefractionGeometryStage.h"
+#include "vtkRefractionQuad.h"
 #include "vtkRefractionShadeStage.h"
 #include "vtkRefractionTargetDraw.h"
 #include "vtkRefractionTargets.h"
@@ -111,20 +111,11 @@ void vtkRefractionSampleComposite::FillSilhouette(
   {
     return;
   }
-  if (!this->FillQuad)
-  {
-    std::string fragmentShader = rfSilhouetteFillFSSource;
-    vtkShaderProgram::Substitute(fragmentShader, "//RF::GlassAround", rfGlassAroundSource);
-    this->FillQuad.reset(new vtkOpenGLQuadHelper(renWin,
-      vtkRefractionShadeStage::GetFarPlaneQuadVertexShader().c_str(), fragmentShader.c_str(),
-      ""));
-  }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->FillQuad->Program);
-  }
-  vtkShaderProgram* program = this->FillQuad->Program;
-  if (!program || !program->GetCompiled())
+  std::string fragmentShader = rfSilhouetteFillFSSource;
+  vtkShaderProgram::Substitute(fragmentShader, "//RF::GlassAround", rfGlassAroundSource);
+  vtkShaderProgram* program = vtkRefractionQuad::Ready(renWin, this->FillQuad,
+    vtkRefractionShadeStage::GetFarPlaneQuadVertexShader().c_str(), fragmentShader.c_str());
+  if (!program)
   {
     vtkErrorMacro("Could not build the glass silhouette's fill; the glass's silhouette at the "
                   "window's samples covers only the pixels whose centre is glass.");

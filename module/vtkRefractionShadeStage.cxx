@@ -16,6 +16,7 @@
 #include "vtkRefractionLights.h"
 #include "vtkRefractionMethod.h"
 #include "vtkRefractionPass.h"
+#include "vtkRefractionQuad.h"
 #include "vtkRefractionTargetDraw.h"
 #include "vtkRefractionTargets.h"
 #include "vtkShaderProgram.h"
@@ -473,7 +474,7 @@ bool vtkRefractionShadeStage::DrawCoarseSamples(vtkOpenGLRenderer* ren,
   vtkTextureObject* ray = targets->Get(vtkRefractionTargets::COARSE_RAY);
   vtkTextureObject* coarseDepth = targets->Get(vtkRefractionTargets::COARSE_Z);
   vtkTextureObject* frontDepth = targets->Get(vtkRefractionTargets::FRONT_DEPTH);
-  vtkShaderProgram* depthProgram = this->ReadyQuad(renWin, this->CoarseDepthQuad,
+  vtkShaderProgram* depthProgram = this->ReadyCoarseQuad(renWin, this->CoarseDepthQuad,
     rfCoarseDepthFSSource, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader());
   if (!colour || !ray || !coarseDepth || !frontDepth || !depthProgram ||
     !this->GetProgram(PROGRAM_COARSE_SAMPLES)->Quad)
@@ -534,7 +535,7 @@ bool vtkRefractionShadeStage::ResolveCoarseSamples(
     source = rfCoarseResolveFSSource;
     vtkShaderProgram::Substitute(source, "in vec2 texCoord;", "in vec2 texCoord;\n" + defines);
   }
-  vtkShaderProgram* program = this->ReadyQuad(renWin, this->CoarseResolveQuad, source,
+  vtkShaderProgram* program = this->ReadyCoarseQuad(renWin, this->CoarseResolveQuad, source,
     vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader());
   if (!program)
   {
@@ -554,25 +555,18 @@ bool vtkRefractionShadeStage::ResolveCoarseSamples(
 }
 
 //------------------------------------------------------------------------------
-vtkShaderProgram* vtkRefractionShadeStage::ReadyQuad(vtkOpenGLRenderWindow* renWin,
+vtkShaderProgram* vtkRefractionShadeStage::ReadyCoarseQuad(vtkOpenGLRenderWindow* renWin,
   std::unique_ptr<vtkOpenGLQuadHelper>& quad, const std::string& fragmentSource,
   const std::string& vertexSource)
 {
-  if (!quad)
-  {
-    quad.reset(new vtkOpenGLQuadHelper(renWin, vertexSource.c_str(), fragmentSource.c_str(), ""));
-  }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(quad->Program);
-  }
-  if (!quad->Program || !quad->Program->GetCompiled())
+  vtkShaderProgram* program =
+    vtkRefractionQuad::Ready(renWin, quad, vertexSource.c_str(), fragmentSource.c_str());
+  if (!program)
   {
     vtkErrorMacro("Could not build a program of the coarse shading; the glass is traced at "
                   "every pixel.");
-    return nullptr;
   }
-  return quad->Program;
+  return program;
 }
 
 //------------------------------------------------------------------------------
@@ -590,19 +584,15 @@ void vtkRefractionShadeStage::SmoothReflectedPixels(
   vtkOpenGLRenderer* ren, vtkTextureObject* shaded)
 {
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  if (!this->SmoothQuad)
+  std::string source;
+  if (!this->SmoothQuad) // the source only when the program is made
   {
-    std::string source = rfSmoothReflectedFSSource;
+    source = rfSmoothReflectedFSSource;
     vtkShaderProgram::Substitute(source, "//RF::ReflectedFilter", rfReflectedFilterSource);
-    this->SmoothQuad.reset(
-      new vtkOpenGLQuadHelper(renWin, GetFarPlaneQuadVertexShader().c_str(), source.c_str(), ""));
   }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->SmoothQuad->Program);
-  }
-  vtkShaderProgram* program = this->SmoothQuad->Program;
-  if (!program || !program->GetCompiled())
+  vtkShaderProgram* program = vtkRefractionQuad::Ready(
+    renWin, this->SmoothQuad, GetFarPlaneQuadVertexShader().c_str(), source.c_str());
+  if (!program)
   {
     vtkErrorMacro("Could not build the program smoothing internal reflections; the glass is "
                   "not drawn.");
@@ -623,18 +613,9 @@ void vtkRefractionShadeStage::DrawCornerDepth(
 {
   vtkOpenGLRenderWindow* renWin = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   vtkOpenGLState* ostate = renWin->GetState();
-  if (!this->CornerDepthQuad)
-  {
-    this->CornerDepthQuad.reset(new vtkOpenGLQuadHelper(renWin,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), rfCornerDepthFSSource,
-      ""));
-  }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(this->CornerDepthQuad->Program);
-  }
-  vtkShaderProgram* program = this->CornerDepthQuad->Program;
-  if (!program || !program->GetCompiled())
+  vtkShaderProgram* program = vtkRefractionQuad::Ready(renWin, this->CornerDepthQuad,
+    vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), rfCornerDepthFSSource);
+  if (!program)
   {
     // Nothing culled: the depth buffer of every corner at 0, so the shading test passes.
     vtkErrorMacro("Could not build the corner depth shader; every corner is shaded.");
@@ -689,23 +670,19 @@ void vtkRefractionShadeStage::Composite(vtkOpenGLRenderer* ren, vtkRefractionTar
   vtkOpenGLState* ostate = renWin->GetState();
   std::unique_ptr<vtkOpenGLQuadHelper>& quad =
     corners ? this->CornerCompositeQuad : this->CompositeQuad;
-  if (!quad)
+  std::string source;
+  if (!quad) // the source only when the program is made
   {
-    std::string source = rfCompositeFSSource;
+    source = rfCompositeFSSource;
     if (corners)
     {
       vtkShaderProgram::Substitute(
         source, "in vec2 texCoord;", "in vec2 texCoord;\n#define RF_CORNER_SAMPLES\n");
     }
-    quad.reset(new vtkOpenGLQuadHelper(renWin,
-      vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str(), ""));
   }
-  else
-  {
-    renWin->GetShaderCache()->ReadyShaderProgram(quad->Program);
-  }
-  vtkShaderProgram* program = quad->Program;
-  if (!program || !program->GetCompiled())
+  vtkShaderProgram* program = vtkRefractionQuad::Ready(renWin, quad,
+    vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str());
+  if (!program)
   {
     vtkErrorMacro("Could not build the glass composite shader; the glass is not drawn.");
     return;

@@ -139,9 +139,9 @@ private:
   // elsewhere (shaders/rfCoarseResolveFS.glsl). False when its program does not build.
   bool ResolveCoarseSamples(
     vtkOpenGLRenderer* ren, vtkRefractionTargets* targets, const Frame& frame);
-  // A full-screen quad's program made ready (built from the sources the first time, when
-  // `quad` is empty); nullptr, with an error, when it does not build.
-  vtkShaderProgram* ReadyQuad(vtkOpenGLRenderWindow* renWin,
+  // A coarse shading quad's program made ready (vtkRefractionQuad::Ready); nullptr, with an
+  // error, when it does not build.
+  vtkShaderProgram* ReadyCoarseQuad(vtkOpenGLRenderWindow* renWin,
     std::unique_ptr<vtkOpenGLQuadHelper>& quad, const std::string& fragmentSource,
     const std::string& vertexSource);
   // Mip levels for the renderer's cube map where it has none and is filtered linearly, so that

@@ -181,7 +181,6 @@ void vtkRefractionTargets::Allocate(vtkOpenGLRenderWindow* renWin, int target)
       const int layers = this->PeelSlots + 1;
       int stackColumns = this->Width > 0 ? static_cast<int>(largest) / this->Width : 1;
       stackColumns = stackColumns < 1 ? 1 : stackColumns > layers ? layers : stackColumns;
-      this->PeelStackColumns = stackColumns;
       columns = this->Width * stackColumns;
       rows = this->Height * ((layers + stackColumns - 1) / stackColumns);
       if (rows > static_cast<int>(largest))
@@ -261,12 +260,6 @@ void vtkRefractionTargets::SetPeelSlots(int slots)
     }
   }
   this->PeelSlots = slots;
-}
-
-//------------------------------------------------------------------------------
-int vtkRefractionTargets::GetPeelStackColumns() const
-{
-  return this->Targets[PEEL_STACK] ? this->PeelStackColumns : 0;
 }
 
 //------------------------------------------------------------------------------

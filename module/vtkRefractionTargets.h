@@ -60,9 +60,10 @@ public:
     PEEL_SLOTS,        ///< R32UI, SetPeelSlots times the height: PEEL's k-buffer, the depths
                        ///< of layers 1 .. K - 1 sorted (vtkRefractionGeometryStage)
     PEEL_STACK,        ///< RGBA32F: the K layers' texels side by side, as many to a row of
-                       ///< layers as fit the driver's largest texture (GetPeelStackColumns),
-                       ///< so that the shading reads any layer in one fetch
-                       ///< (vtkRefractionLayerPack)
+                       ///< layers as fit the driver's largest texture (layer k at column
+                       ///< k % columns, row k / columns, each the window's size; columns:
+                       ///< the stack's width over the window's), so that the shading reads
+                       ///< any layer in one fetch (vtkRefractionLayerPack)
     FRONT_SH,          ///< RGBA32F: the SH method's exit direction (view space) and length
     DEBUG_0,           ///< RGBA32F: P2 and |P2 - P1|
     DEBUG_1,           ///< RGBA32F: T2 and the flags
@@ -112,10 +113,6 @@ public:
   /// How many slots (rows of the height each) PEEL_SLOTS holds: K - 1; PEEL_STACK holds
   /// K layers. Call before Update; a change allocates them again.
   void SetPeelSlots(int slots);
-
-  /// How many layers PEEL_STACK holds side by side in a row of layers (layer k at column
-  /// k % columns, row k / columns, each the window's size); 0 when it is not allocated.
-  int GetPeelStackColumns() const;
 
   /// Bytes of all allocated targets, as the driver reports their formats.
   unsigned long long GetBytes() const;
@@ -169,7 +166,6 @@ private:
   int Height = 0;
   int SceneDepthFormat = -1; // vtkTextureObject's depth enum; -1: DEPTH24_STENCIL8
   int PeelSlots = 1;
-  int PeelStackColumns = 0;
 };
 
 #endif

@@ -1,0 +1,34 @@
+/**
+ * @class   vtkRefractionQuad
+ * @brief   An image-space stage's program on a vtkOpenGLQuadHelper, made ready to draw.
+ *
+ * Every image-space stage of the pass (shading, packing and stacking the layers, counting
+ * them, the composites, the coarse shading) keeps its program on a vtkOpenGLQuadHelper that
+ * it builds on first use and makes current on every later one. Ready does both, and drops a
+ * quad whose program did not compile, so that the next frame builds it again (rather than
+ * asking VTK's shader cache to make a program current that is not there). What a stage leaves
+ * undone when its program is missing differs, so the stage reports it.
+ */
+#ifndef vtkRefractionQuad_h
+#define vtkRefractionQuad_h
+
+#include <memory> // For std::unique_ptr
+
+class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+
+class vtkRefractionQuad
+{
+public:
+  /// The quad's program, current: built from the two sources where `quad` is empty (VTK's
+  /// shader cache hands back a program built before from the same sources), else the one it
+  /// holds. nullptr where it does not compile; `quad` is then emptied.
+  static vtkShaderProgram* Ready(vtkOpenGLRenderWindow* renWin,
+    std::unique_ptr<vtkOpenGLQuadHelper>& quad, const char* vertexSource,
+    const char* fragmentSource);
+
+  vtkRefractionQuad() = delete;
+};
+
+#endif

@@ -2,21 +2,24 @@
  * @class   vtkRefractionLayerPack
  * @brief   PEEL: the peeled layers laid out for the shading's reads.
  *
- * An image-space stage of vtkRefractionPass run after the peeling. It reads the depth of each
- * of the K layers (the front G-buffer and PEEL_1 .. PEEL_{K-1}) and writes them into
- * PEEL_DEPTHS_A (layers 0-3) and PEEL_DEPTHS_B (4-7) (shaders/rfLayerPackFS.glsl), so that each
- * step of PEEL's ray march reads one or two texels instead of K. It then copies each layer
- * found into its place in PEEL_STACK (shaders/rfLayerStackFS.glsl), so that the shading reads
- * a layer's whole texel (normal, depth, material) in one fetch: through a sampler per layer,
- * llvmpipe (and a GPU's warp whose pixels want different layers) fetched every layer's.
+ * An image-space stage of vtkRefractionPass run after the peeling. It copies each layer found
+ * (the front G-buffer and PEEL_1 .. PEEL_{K-1}) into its place in PEEL_STACK (a blit per
+ * layer), so that the shading reads a layer's whole texel (normal, depth, material) in one
+ * fetch: through a sampler per layer, llvmpipe (and a GPU's warp whose pixels want different
+ * layers) fetched every layer's. It then reads the depth of each layer from the stack and
+ * writes them into PEEL_DEPTHS_A (layers 0-3) and PEEL_DEPTHS_B (4-7)
+ * (shaders/rfLayerPackFS.glsl), so that each step of PEEL's ray march reads one or two texels
+ * instead of K.
  */
 #ifndef vtkRefractionLayerPack_h
 #define vtkRefractionLayerPack_h
 
 #include "vtkObject.h"
+#include "vtkSmartPointer.h" // For members
 
 #include <memory> // For members
 
+class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkRefractionTargets;
@@ -48,7 +51,7 @@ private:
 
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   int QuadLayers = 0;
-  std::unique_ptr<vtkOpenGLQuadHelper> StackQuad;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> LayerReader; // the stacking's read framebuffer
 };
 
 #endif

@@ -30,8 +30,8 @@ void vtkRefractionLayerPack::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Packing shader: " << (this->Quad ? "built" : "not built") << " for "
      << this->QuadLayers << " layers\n";
-  os << indent << "Layer reader (the stacking's blits): " << (this->LayerReader ? "made" : "not made")
-     << "\n";
+  os << indent << "Layer reader (the stacking's blits): "
+     << (this->LayerReader ? "made" : "not made") << "\n";
 }
 
 //------------------------------------------------------------------------------

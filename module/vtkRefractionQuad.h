@@ -2,12 +2,14 @@
  * @class   vtkRefractionQuad
  * @brief   An image-space stage's program on a vtkOpenGLQuadHelper, made ready to draw.
  *
- * Every image-space stage of the pass (shading, packing and stacking the layers, counting
- * them, the composites, the coarse shading) keeps its program on a vtkOpenGLQuadHelper that
- * it builds on first use and makes current on every later one. Ready does both, and drops a
- * quad whose program did not compile, so that the next frame builds it again (rather than
- * asking VTK's shader cache to make a program current that is not there). What a stage leaves
- * undone when its program is missing differs, so the stage reports it.
+ * The pass's image-space stages (packing PEEL's layers and counting them, the composites, the
+ * smoothing of internal reflections, the corner depth, the coarse shading, the depth range)
+ * keep their programs on vtkOpenGLQuadHelpers that they build on first use and make current
+ * on every later one (the shading keeps its own, by its defines: vtkRefractionShadeStage).
+ * Ready does both, and drops a quad whose program did not compile, so that the next frame
+ * builds it again (rather than asking VTK's shader cache to make a program current that is
+ * not there). What a stage leaves undone when its program is missing differs, so the stage
+ * reports it.
  */
 #ifndef vtkRefractionQuad_h
 #define vtkRefractionQuad_h

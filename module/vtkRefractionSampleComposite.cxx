@@ -111,8 +111,12 @@ void vtkRefractionSampleComposite::FillSilhouette(
   {
     return;
   }
-  std::string fragmentShader = rfSilhouetteFillFSSource;
-  vtkShaderProgram::Substitute(fragmentShader, "//RF::GlassAround", rfGlassAroundSource);
+  std::string fragmentShader;
+  if (!this->FillQuad) // the source only when the program is made
+  {
+    fragmentShader = rfSilhouetteFillFSSource;
+    vtkShaderProgram::Substitute(fragmentShader, "//RF::GlassAround", rfGlassAroundSource);
+  }
   vtkShaderProgram* program = vtkRefractionQuad::Ready(renWin, this->FillQuad,
     vtkRefractionShadeStage::GetFarPlaneQuadVertexShader().c_str(), fragmentShader.c_str());
   if (!program)

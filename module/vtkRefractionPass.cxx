@@ -117,7 +117,8 @@ void vtkRefractionPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PeelLayersFound: " << this->PeelLayersFound << "\n";
   os << indent << "PeelLayersDrawn: " << this->PeelLayersDrawn << "\n";
   os << indent << "PeelFacingCulled: " << this->PeelFacingCulled << "\n";
-  os << indent << "PeelFacingPossible: " << this->PeelFacingPossible << "\n";
+  os << indent
+     << "PeelFacingPossible: " << this->GeometryStage->GetPeelFacingPossible() << "\n";
   os << indent << "PeelCapture: " << this->PeelCapture << "\n";
   os << indent << "SHSmoothing: " << this->SHSmoothing << "\n";
   os << indent << "EnvironmentMode: "
@@ -408,7 +409,7 @@ void vtkRefractionPass::RenderGlass(
   const bool peelKBuffer = peelLayers > 2 &&
     (this->PeelCapture == PEEL_CAPTURE_K_BUFFER ||
       (this->PeelCapture == PEEL_CAPTURE_AUTO && !exchange && peelLayers >= 6 &&
-        this->PeelLayersFound > 3 && !this->PeelFacingPossible)) &&
+        this->PeelLayersFound > 3 && !this->GeometryStage->GetPeelFacingPossible())) &&
     vtkRefractionGeometryStage::SupportsPeelKBuffer(renWin, this->Height, peelLayers);
   wanted[vtkRefractionTargets::PEEL_SLOTS] = peelKBuffer;
   this->Targets->SetPeelSlots(peelLayers - 1);
@@ -559,7 +560,6 @@ void vtkRefractionPass::RenderGlass(
         this->GeometryStage->DrawPeelLayers(ren, this->Targets, peelLayers, true);
       this->PeelLayersDrawn = this->GeometryStage->GetPeelDraws();
       this->PeelFacingCulled = this->GeometryStage->GetPeelByFacing();
-      this->PeelFacingPossible = this->GeometryStage->GetPeelFacingPossible();
     }
     const bool packed =
       this->LayerPack->Pack(renWin, this->Targets, peelLayers, this->PeelLayersFound);

@@ -346,9 +346,10 @@ public:
    * (4 more bytes per slot and pixel), the second writes each layer's normal and material.
    * The same layers, so the same pictures. AUTO (default): the k-buffer with 6 or more layers
    * where the last PEEL frame found more than 3 holding glass and its glass could not be
-   * peeled one facing at a time (GetPeelFacingCulled; in one process: across MPI ranks only
-   * K_BUFFER asks for it), peeling otherwise. Peeling by facing drew PEEL 8's layers in
-   * 64-74 ms on the isosurface against the k-buffer's 89-102, and alike on the bunny
+   * peeled one facing at a time (as GetPeelFacingCulled reports where it is peeled; in one
+   * process: across MPI ranks only K_BUFFER asks for it), peeling otherwise. Peeling by
+   * facing drew PEEL 8's layers in 64-74 ms on the isosurface against the k-buffer's 89-102,
+   * and alike on the bunny
    * (llvmpipe, single-sampled 512x512; docs/benchmark.md, *The k-buffer left where the
    * layers can be peeled by facing*). Against peeling both facings (llvmpipe, 2 cores, VTK's
    * default window at 512x512): PEEL 8 on the bunny 6.9 -> 4.6 times plain VTK, on the nested
@@ -677,7 +678,6 @@ protected:
   int PeelLayersFound = 0;
   int PeelLayersDrawn = 0;
   bool PeelFacingCulled = false;
-  bool PeelFacingPossible = false; // the last PEEL frame's glass could be peeled by facing
   double SHSmoothing = 5.0;
   bool Fresnel = true;
   bool FilteredLookups = true;

@@ -30,7 +30,6 @@ bool vtkRefractionPass::CompositeAcrossRanks(vtkOpenGLRenderer* ren,
     this->GeometryStage->DrawPeelLayers(ren, this->Targets, peelLayers, false);
     this->PeelLayersDrawn = this->GeometryStage->GetPeelDraws();
     this->PeelFacingCulled = this->GeometryStage->GetPeelByFacing();
-    this->PeelFacingPossible = this->GeometryStage->GetPeelFacingPossible();
     this->StageTimers->Stop(TIMED_BACK_CAPTURE);
   }
   if ((method->NeedsDepthRange() && !reduction) || peelLayers > 1)

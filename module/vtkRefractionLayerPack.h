@@ -17,6 +17,7 @@
 #include "vtkObject.h"
 #include "vtkSmartPointer.h" // For members
 
+#include <array>  // For members
 #include <memory> // For members
 
 class vtkOpenGLFramebufferObject;
@@ -49,7 +50,10 @@ private:
 
   bool Stack(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int found);
 
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  void ReleaseQuads(vtkWindow* w);
+
+  // The packing's programs by the count of layers found (1..8), for QuadLayers layers.
+  std::array<std::unique_ptr<vtkOpenGLQuadHelper>, 8> Quads;
   int QuadLayers = 0;
   vtkSmartPointer<vtkOpenGLFramebufferObject> LayerReader; // the stacking's read framebuffer
 };

@@ -3,11 +3,11 @@
 // march reads one texel (two for K > 4) per step instead of one per layer (rfMethodPEEL.glsl).
 // Read from the stack of the layers found this frame (vtkRefractionTargets::PEEL_STACK: layer k
 // at rfLayerOrigins[2k], [2k + 1], each rfLayerSize), where each layer texel keeps its depth in
-// z (rfGeometryFS.glsl): one fetch per layer found. The layers from
-// RF_PEEL_LAYERS_FOUND on were not drawn this frame (peeling stopped at an empty one): written
-// empty.
-// Defines: RF_PEEL_LAYERS (K), RF_PEEL_LAYERS_FOUND (1..K; a constant, so that llvmpipe's
-// unrolled loop fetches only the layers found: bounded by a uniform, it fetched all K).
+// z (rfGeometryFS.glsl): one fetch per layer found. The layers from RF_PEEL_LAYERS_FOUND on
+// were not drawn this frame (peeling stopped at an empty one): written empty.
+// Defines: RF_PEEL_LAYERS (K), RF_PEEL_LAYERS_FOUND (1..K). The count found is a constant so
+// that the loop is unrolled to exactly the layers found: bounded by min(a uniform count, K),
+// it was unrolled K times under a mask and llvmpipe fetched all K layers (vtkRefractionLayerPack).
 in vec2 texCoord;
 uniform sampler2D rfStack;
 uniform ivec2 rfLayerSize;

@@ -49,20 +49,37 @@ bool vtkRefractionLayerPack::Pack(
     return false;
   }
   found = std::max(1, std::min(found, layers)); // the front G-buffer is always there
-  // Stacked first: the depths are then read from the stack, a fetch per layer found, where a
-  // sampler per layer read all K (llvmpipe runs every branch).
-  if (!this->Stack(renWin, targets, found))
+  vtkTextureObject* stack = targets->Get(vtkRefractionTargets::PEEL_STACK);
+  vtkTextureObject* front = targets->Get(vtkRefractionTargets::FRONT_SURFACE);
+  const int width = front ? static_cast<int>(front->GetWidth()) : 0;
+  const int height = front ? static_cast<int>(front->GetHeight()) : 0;
+  // Layers side by side as the stack is wide (vtkRefractionTargets), as the shading reads it.
+  const int columns = stack && width > 0 ? static_cast<int>(stack->GetWidth()) / width : 0;
+  if (columns < 1)
   {
+    vtkErrorMacro("PEEL's layer stack is not allocated; the glass is not refracted.");
     return false;
   }
+  // Where each layer lies in the stack, for the blits and, as uniforms, for the packing: a
+  // shader's integer division by the columns is a division per pixel on llvmpipe (its vectors
+  // have none).
+  int origins[16] = { 0 };
+  for (int layer = 0; layer < found; ++layer)
+  {
+    origins[2 * layer] = (layer % columns) * width;
+    origins[2 * layer + 1] = (layer / columns) * height;
+  }
+  // Stacked first: the depths are then read from the stack, a fetch per layer found, where a
+  // sampler per layer read all K (llvmpipe runs every branch).
+  this->Stack(renWin, targets, found, origins);
   if (this->QuadLayers != layers)
   {
     this->ReleaseQuads(renWin);
     this->QuadLayers = layers;
   }
   // A program for each count found, its loop of constant bound: llvmpipe unrolls it and
-  // fetches only the layers found. A loop bounded by a uniform count was unrolled to K
-  // iterations under a mask, each fetching (K = 8 with 2 found: 14 ms at 512 x 512 against 5).
+  // fetches only the layers found. Bounded by min(the count found, K), the loop was unrolled K
+  // times under a mask, each fetching (K = 8 with 2 found: 14 ms at 512 x 512 against 5).
   std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->Quads[found - 1];
   std::string source;
   if (!quad) // the source only when the program is made
@@ -79,21 +96,8 @@ bool vtkRefractionLayerPack::Pack(
     vtkErrorMacro("Could not build the layer packing shader; the glass is not refracted.");
     return false;
   }
-  vtkTextureObject* stack = targets->Get(vtkRefractionTargets::PEEL_STACK);
-  vtkTextureObject* front = targets->Get(vtkRefractionTargets::FRONT_SURFACE);
   stack->Activate();
   program->SetUniformi("rfStack", stack->GetTextureUnit());
-  // Where each layer lies in the stack, from the CPU: a shader's integer division by the
-  // columns is a division per pixel on llvmpipe (its vectors have none).
-  const int width = static_cast<int>(front->GetWidth());
-  const int height = static_cast<int>(front->GetHeight());
-  const int columns = std::max(static_cast<int>(stack->GetWidth()) / std::max(width, 1), 1);
-  int origins[16] = { 0 };
-  for (int layer = 0; layer < found; ++layer)
-  {
-    origins[2 * layer] = (layer % columns) * width;
-    origins[2 * layer + 1] = (layer / columns) * height;
-  }
   program->SetUniform1iv("rfLayerOrigins", 2 * found, origins);
   const int layerSize[2] = { width, height };
   program->SetUniform2i("rfLayerSize", layerSize);
@@ -116,20 +120,13 @@ bool vtkRefractionLayerPack::Pack(
 }
 
 //------------------------------------------------------------------------------
-bool vtkRefractionLayerPack::Stack(
-  vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int found)
+void vtkRefractionLayerPack::Stack(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets,
+  int found, const int origins[16])
 {
   vtkTextureObject* stack = targets->Get(vtkRefractionTargets::PEEL_STACK);
   vtkTextureObject* front = targets->Get(vtkRefractionTargets::FRONT_SURFACE);
-  const int width = front ? static_cast<int>(front->GetWidth()) : 0;
-  const int height = front ? static_cast<int>(front->GetHeight()) : 0;
-  // Layers side by side as the stack is wide (vtkRefractionTargets), as the shading reads it.
-  const int columns = stack && width > 0 ? static_cast<int>(stack->GetWidth()) / width : 0;
-  if (columns < 1)
-  {
-    vtkErrorMacro("PEEL's layer stack is not allocated; the glass is not refracted.");
-    return false;
-  }
+  const int width = static_cast<int>(front->GetWidth());
+  const int height = static_cast<int>(front->GetHeight());
   if (!this->LayerReader)
   {
     this->LayerReader = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
@@ -149,8 +146,8 @@ bool vtkRefractionLayerPack::Stack(
   {
     vtkTextureObject* texture = targets->Get(
       layer == 0 ? vtkRefractionTargets::FRONT_SURFACE : vtkRefractionTargets::PEEL_1 + layer - 1);
-    const int x = (layer % columns) * width;
-    const int y = (layer / columns) * height;
+    const int x = origins[2 * layer];
+    const int y = origins[2 * layer + 1];
     this->LayerReader->AddColorAttachment(0, texture);
     this->LayerReader->ActivateReadBuffer(0);
     glBlitFramebuffer(
@@ -159,7 +156,6 @@ bool vtkRefractionLayerPack::Stack(
   this->LayerReader->RemoveColorAttachment(0);
   this->LayerReader->UnBind(GL_READ_FRAMEBUFFER);
   this->LayerReader->RestorePreviousBindingsAndBuffers(GL_READ_FRAMEBUFFER);
-  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -48,7 +48,9 @@ private:
   vtkRefractionLayerPack(const vtkRefractionLayerPack&) = delete;
   void operator=(const vtkRefractionLayerPack&) = delete;
 
-  bool Stack(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int found);
+  // Copies the layers found into the stack, layer k at origins[2k], [2k + 1].
+  void Stack(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int found,
+    const int origins[16]);
 
   void ReleaseQuads(vtkWindow* w);
 

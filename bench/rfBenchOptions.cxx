@@ -87,8 +87,8 @@ bool Parse(int argc, char* argv[], Options& o)
   args.AddBooleanArgument("--quick", &o.Quick,
     "The four meshes and nested at 512x512: DIR (5 steps; also with point lookups, with "
     "anti-aliasing, with two total internal reflections followed, with the exit's "
-    "reflection followed, and with both), SIR, PEEL with 2, 4 and 8 layers (and 4 with "
-    "two reflections followed), each with its plain render, 3 repeats.");
+    "reflection followed, and with both), SIR, PEEL with 2, 4 and 8 layers (and 4 and 8 "
+    "with two reflections followed), each with its plain render, 3 repeats.");
   args.AddBooleanArgument("--smoke", &o.Smoke,
     "64x64, sphere and torus, 5 frames, every method once: the ctest smoke run.");
   args.AddBooleanArgument("--x11", &o.X11, "Render through an X window instead of EGL.");

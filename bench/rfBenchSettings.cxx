@@ -62,6 +62,8 @@ std::vector<Setting> PresetSettings(const Options& o)
       settings.push_back(peel(layers, 0));
     settings.push_back(peel(4, 2));
     settings.push_back(smoothed(peel(4, 2)));
+    // Every interface of nested glass and its internal reflections: what PEEL's closest costs.
+    settings.push_back(smoothed(peel(8, 2)));
     settings.push_back({ "SH", 0 });
     return settings;
   }

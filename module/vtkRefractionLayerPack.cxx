@@ -71,7 +71,7 @@ bool vtkRefractionLayerPack::Pack(
   }
   // Stacked first: the depths are then read from the stack, a fetch per layer found, where a
   // sampler per layer read all K (llvmpipe runs every branch).
-  this->Stack(renWin, targets, found, origins);
+  this->Stack(renWin, targets, stack, width, height, found, origins);
   if (this->QuadLayers != layers)
   {
     this->ReleaseQuads(renWin);
@@ -121,12 +121,8 @@ bool vtkRefractionLayerPack::Pack(
 
 //------------------------------------------------------------------------------
 void vtkRefractionLayerPack::Stack(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets,
-  int found, const int origins[16])
+  vtkTextureObject* stack, int width, int height, int found, const int origins[16])
 {
-  vtkTextureObject* stack = targets->Get(vtkRefractionTargets::PEEL_STACK);
-  vtkTextureObject* front = targets->Get(vtkRefractionTargets::FRONT_SURFACE);
-  const int width = static_cast<int>(front->GetWidth());
-  const int height = static_cast<int>(front->GetHeight());
   if (!this->LayerReader)
   {
     this->LayerReader = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();

@@ -24,6 +24,7 @@ class vtkOpenGLFramebufferObject;
 class vtkOpenGLQuadHelper;
 class vtkOpenGLRenderWindow;
 class vtkRefractionTargets;
+class vtkTextureObject;
 class vtkWindow;
 
 class vtkRefractionLayerPack : public vtkObject
@@ -48,9 +49,10 @@ private:
   vtkRefractionLayerPack(const vtkRefractionLayerPack&) = delete;
   void operator=(const vtkRefractionLayerPack&) = delete;
 
-  // Copies the layers found into the stack, layer k at origins[2k], [2k + 1].
-  void Stack(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int found,
-    const int origins[16]);
+  // Copies the layers found (each width x height) into `stack`, layer k at origins[2k],
+  // [2k + 1].
+  void Stack(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets,
+    vtkTextureObject* stack, int width, int height, int found, const int origins[16]);
 
   void ReleaseQuads(vtkWindow* w);
 

@@ -328,6 +328,14 @@ int main(int argc, char* argv[])
           pass->DebugOutputOn();
           window->Render();
           pass->DebugOutputOff();
+          if (!pass->GetDebugImage())
+          {
+            // The pass said why (its programs' errors above); a row without its picture
+            // would score the scene without glass.
+            std::fprintf(stderr, "%s %d %s: the pass drew no glass; row skipped\n",
+              scene.Name.c_str(), size, setting.Label().c_str());
+            continue;
+          }
           vtkNew<vtkImageData> debug;
           debug->DeepCopy(pass->GetDebugImage());
           window->Render();

@@ -264,6 +264,8 @@ public:
    * mirrored there and followed to its next exit, up to B times; the TIR policy applies after
    * the last. DIR follows it between the front and the back capture only (a ray that would
    * cross a third surface leaves where the two-layer picture says); PEEL through its layers.
+   * More is not always closer: on blobby glass (the benchmark's metaballs) rays that hug the
+   * silhouette read worse after a third and fourth bounce than with two (docs/benchmark.md).
    */
   vtkSetClampMacro(TIRBounces, int, 0, 8);
   vtkGetMacro(TIRBounces, int);

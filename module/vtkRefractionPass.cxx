@@ -578,10 +578,13 @@ void vtkRefractionPass::RenderGlass(
       ren, this->GeometryStage, this->Targets, this->AntiAliasing, frame.GlassRectangle);
   }
   this->StageTimers->Stop(TIMED_SHADE);
-  if (this->DebugOutput && this->ShadeStage->Prepare(ren, method, this, frame, true))
+  if (this->DebugOutput)
   {
-    this->DebugImage = this->ShadeStage->RenderDebug(
-      ren, method, this, this->Targets, frame, materialIOR, materialSheet);
+    // None rather than the last frame's where this frame's debug program cannot be built.
+    this->DebugImage = this->ShadeStage->Prepare(ren, method, this, frame, true)
+      ? this->ShadeStage->RenderDebug(
+          ren, method, this, this->Targets, frame, materialIOR, materialSheet)
+      : nullptr;
   }
   this->ReportGLError("the refraction pass's frame");
 }

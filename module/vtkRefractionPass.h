@@ -559,6 +559,7 @@ public:
    * GetDebugImage(): point arrays "P2" (3), "T2" (3), "Thickness" (1) and "Flags" (1: 0 no
    * glass, 1 glass, 2 glass with total internal reflection at the exit, 3 total reflection at
    * the entry: IOR < 1 beyond the critical angle, T2 is then the mirror direction).
+   * GetDebugImage() is null after a frame whose debug program could not be built.
    */
   vtkSetMacro(DebugOutput, bool);
   vtkGetMacro(DebugOutput, bool);

@@ -3,10 +3,10 @@
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
-#include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
 #include "vtkRefractionQuad.h"
+#include "vtkRefractionShadeStage.h"
 #include "vtkRefractionTargetDraw.h"
 #include "vtkRefractionTargets.h"
 #include "vtkShaderProgram.h"
@@ -41,8 +41,8 @@ void vtkRefractionLayerPack::PrintSelf(ostream& os, vtkIndent indent)
 }
 
 //------------------------------------------------------------------------------
-bool vtkRefractionLayerPack::Pack(
-  vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int layers, int found)
+bool vtkRefractionLayerPack::Pack(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets,
+  int layers, int found, const int glassRectangle[4])
 {
   if (layers < 2 || layers > 8)
   {
@@ -90,7 +90,7 @@ bool vtkRefractionLayerPack::Pack(
         "\n#define RF_PEEL_LAYERS_FOUND " + std::to_string(found) + "\n");
   }
   vtkShaderProgram* program = vtkRefractionQuad::Ready(renWin, quad,
-    vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), source.c_str());
+    vtkRefractionShadeStage::GetFarPlaneQuadVertexShader().c_str(), source.c_str());
   if (!program)
   {
     vtkErrorMacro("Could not build the layer packing shader; the glass is not refracted.");
@@ -108,11 +108,25 @@ bool vtkRefractionLayerPack::Pack(
     packed.push_back(targets->Get(vtkRefractionTargets::PEEL_DEPTHS_B));
   }
   {
-    vtkRefractionTargetDraw draw(renWin, targets, packed, nullptr);
+    // Packed where the front capture holds glass only (every layer lies behind the front), as
+    // the shading is: within the glass's rectangle, the quad at the far plane against the
+    // front's depth (1 where no glass), GL_GREATER tested before the program, so llvmpipe
+    // skips the blocks without glass, where it ran the fetches for every pixel of the window.
+    // The rest is cleared to empty: the march reads texels outside the rectangle too.
+    vtkRefractionTargetDraw draw(
+      renWin, targets, packed, targets->Get(vtkRefractionTargets::FRONT_DEPTH));
+    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
     ostate->vtkglScissor(0, 0, draw.GetWidth(), draw.GetHeight());
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+    ostate->vtkglScissor(
+      glassRectangle[0], glassRectangle[1], glassRectangle[2], glassRectangle[3]);
+    ostate->vtkglEnable(GL_SCISSOR_TEST);
     ostate->vtkglDisable(GL_BLEND);
-    ostate->vtkglDisable(GL_DEPTH_TEST);
+    ostate->vtkglEnable(GL_DEPTH_TEST);
+    ostate->vtkglDepthFunc(GL_GREATER);
+    ostate->vtkglDepthMask(GL_FALSE);
     quad->Render();
   }
   stack->Deactivate();

@@ -36,8 +36,10 @@ public:
 
   /// Packs the depths of `layers` layers (2..8), of which the first `found` were drawn this
   /// frame (the others are written empty, whatever their targets hold), and stacks the layers
-  /// found; false when a shader cannot be built.
-  bool Pack(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int layers, int found);
+  /// found; false when a shader cannot be built. glassRectangle (x, y, width, height) bounds
+  /// the glass on screen: outside it every depth is written empty.
+  bool Pack(vtkOpenGLRenderWindow* renWin, vtkRefractionTargets* targets, int layers, int found,
+    const int glassRectangle[4]);
 
   void ReleaseGraphicsResources(vtkWindow* w);
 

@@ -562,7 +562,8 @@ void vtkRefractionPass::RenderGlass(
       this->PeelFacingCulled = this->GeometryStage->GetPeelByFacing();
     }
     const bool packed =
-      this->LayerPack->Pack(renWin, this->Targets, peelLayers, this->PeelLayersFound);
+      this->LayerPack->Pack(
+        renWin, this->Targets, peelLayers, this->PeelLayersFound, frame.GlassRectangle);
     this->StageTimers->Stop(TIMED_BACK_CAPTURE);
     if (!packed)
     {

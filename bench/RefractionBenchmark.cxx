@@ -340,6 +340,11 @@ int main(int argc, char* argv[])
           debug->DeepCopy(pass->GetDebugImage());
           window->Render();
           const std::vector<float> colour = GrabColour(window);
+          if (setting.Method == "PEEL")
+          {
+            row.PeelLayersFound = pass->GetPeelLayersFound();
+            row.PeelDraws = pass->GetPeelLayersDrawn();
+          }
           // The one-ray references are held against one lookup direction per pixel too; the
           // supersampled ones against the picture as the row draws it.
           std::vector<float> pointColour = colour;

@@ -63,6 +63,11 @@ struct Row
   double AngMean = 0, AngP95 = 0, AngMax = 0, P2Mean = 0, P2Max = 0, TirShare = 0,
          RefTirShare = 0;
   long Pixels = 0, TirPixels = 0;
+  // PEEL: the layers found holding glass and the draws that captured them, in the frame scored
+  // (vtkRefractionPass::GetPeelLayersFound, GetPeelLayersDrawn; 0 for the other methods). The
+  // shading follows only the layers found, so two runs that score a row differently can say
+  // whether they found different layers.
+  int PeelLayersFound = 0, PeelDraws = 0;
 };
 }
 

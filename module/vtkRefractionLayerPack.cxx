@@ -115,11 +115,8 @@ bool vtkRefractionLayerPack::Pack(vtkOpenGLRenderWindow* renWin, vtkRefractionTa
     // The rest is cleared to empty: the march reads texels outside the rectangle too.
     vtkRefractionTargetDraw draw(
       renWin, targets, packed, targets->Get(vtkRefractionTargets::FRONT_DEPTH));
-    vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
-    ostate->vtkglScissor(0, 0, draw.GetWidth(), draw.GetHeight());
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-    ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
+    draw.ClearColours();
     ostate->vtkglScissor(
       glassRectangle[0], glassRectangle[1], glassRectangle[2], glassRectangle[3]);
     ostate->vtkglEnable(GL_SCISSOR_TEST);

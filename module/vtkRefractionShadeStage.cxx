@@ -419,7 +419,7 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
       // averages the glass around a pixel (rfReflectedFilter.glsl): texels without glass must
       // hold 0, not what an earlier frame left there. The whole target: a mipmap block reaches
       // past the rectangle, and the smoothing reads a texel beyond it.
-      this->ClearColourTarget(ostate);
+      draw.ClearColours();
     }
     if (corners)
     {
@@ -451,7 +451,7 @@ void vtkRefractionShadeStage::Render(vtkOpenGLRenderer* ren, vtkRefractionMethod
       draw.Attach({ glassColour }, traceDepth ? frontDepth : depth);
       if (frame.SampleComposite)
       {
-        this->ClearColourTarget(ostate);
+        draw.ClearColours();
       }
       this->SmoothReflectedPixels(ren, shaded);
     }
@@ -490,7 +490,7 @@ bool vtkRefractionShadeStage::DrawCoarseSamples(vtkOpenGLRenderer* ren,
     // Every block's texel holds 0 (no glass) unless this frame traces it: the pixels read the
     // blocks around theirs, one beyond the glass's rectangle too.
     ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    this->ClearColourTarget(ostate);
+    draw.ClearColours();
     // The blocks of the glass's rectangle.
     const int* r = frame.GlassRectangle;
     const int x0 = r[0] / 2;
@@ -567,16 +567,6 @@ vtkShaderProgram* vtkRefractionShadeStage::ReadyCoarseQuad(vtkOpenGLRenderWindow
                   "every pixel.");
   }
   return program;
-}
-
-//------------------------------------------------------------------------------
-void vtkRefractionShadeStage::ClearColourTarget(vtkOpenGLState* ostate)
-{
-  vtkOpenGLState::ScopedglClearColor clearColorSaver(ostate);
-  ostate->vtkglDisable(GL_SCISSOR_TEST);
-  ostate->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
-  ostate->vtkglClear(GL_COLOR_BUFFER_BIT);
-  ostate->vtkglEnable(GL_SCISSOR_TEST);
 }
 
 //------------------------------------------------------------------------------

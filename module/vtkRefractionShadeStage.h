@@ -162,8 +162,6 @@ private:
   // the front capture's depth test set), the shading's output `shaded` with the pixels near a
   // marked one smoothed (shaders/rfSmoothReflectedFS.glsl).
   void SmoothReflectedPixels(vtkOpenGLRenderer* ren, vtkTextureObject* shaded);
-  // Clears the whole colour attachment to 0 (scissor test on again after).
-  static void ClearColourTarget(vtkOpenGLState* ostate);
   // Anti-aliasing: into the depth buffer attached now, the nearest front depth of the four
   // pixels that meet at each corner (shaders/rfCornerDepthFS.glsl).
   void DrawCornerDepth(vtkOpenGLRenderer* ren, vtkTextureObject* frontDepth);

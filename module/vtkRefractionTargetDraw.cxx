@@ -79,3 +79,13 @@ void vtkRefractionTargetDraw::Attach(
     this->State->vtkglViewport(0, 0, this->Width, this->Height);
   }
 }
+
+//------------------------------------------------------------------------------
+void vtkRefractionTargetDraw::ClearColours()
+{
+  vtkOpenGLState::ScopedglClearColor clearColour(this->State);
+  vtkOpenGLState::ScopedglEnableDisable scissorTest(this->State, GL_SCISSOR_TEST);
+  this->State->vtkglDisable(GL_SCISSOR_TEST);
+  this->State->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
+  this->State->vtkglClear(GL_COLOR_BUFFER_BIT);
+}

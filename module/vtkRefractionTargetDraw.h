@@ -40,6 +40,12 @@ public:
   /// colour's size (the depth's without colours).
   void Attach(const std::vector<vtkTextureObject*>& colours, vtkTextureObject* depth);
 
+  /// Clear the colours attached now to 0 over their whole size, whatever the scissor box:
+  /// stages that draw within the glass's rectangle and read past it (mipmaps, filters, the
+  /// layers' march) need 0 there, not what an earlier frame left. The scissor test and the
+  /// clear colour are as they were after.
+  void ClearColours();
+
   vtkOpenGLFramebufferObject* GetFramebuffer() const { return this->Framebuffer; }
   /// The viewport's size that the last Attach set.
   int GetWidth() const { return this->Width; }

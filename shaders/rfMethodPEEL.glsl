@@ -165,7 +165,9 @@ int rfPeelTrace(vec3 P1, vec3 T1, int material, int channel, bool split, out vec
   int interfaces = rfk_peel_interfaces(RF_PEEL_LAYERS, RF_PEEL_BOUNCES);
   rfk_peel_ray ray = rfk_peel_entered(P1, T1, material);
   rfk_peel_ray branch;
-  rfk_peel_follow(0, RF_PEEL_LAYERS, channel, rfCamera(), ray, interfaces, RF_PEEL_BOUNCES,
+  // The layers that hold glass this frame (rfk_peel_may_meet_more); the others read as empty.
+  int count = min(RF_PEEL_LAYERS, rfPeelLayersFound);
+  rfk_peel_follow(0, count, channel, rfCamera(), ray, interfaces, RF_PEEL_BOUNCES,
     RF_TIR_POLICY, rfGlassExtent, rfGlassDepthRange, split, branch, branchWeight);
   P2 = ray.P;
   T2 = ray.T;

@@ -7,6 +7,8 @@
  * and two balls one behind the other. */
 #include "rf_peel.h"
 
+#include "rf_kernel_peel.h"
+
 #include "rf_test.h"
 
 #include <math.h>
@@ -463,11 +465,28 @@ static void test_bad_input(void)
   CHECK(rf_peel_trace(&input, sample_layers, &s, &result) == RF_ERR_NOT_FINITE);
 }
 
+/* Where two layers hold the glass (one glass's front and back at every pixel), a ray that has
+ * left it is not searched for more: only glass behind glass, which needs a third layer
+ * somewhere, could be met on its way (rfk_peel_may_meet_more). */
+static void test_leaving_two_layers(void)
+{
+  rfk_peel_ray ray =
+    rfk_peel_entered(rf_vec3_make(0.0, 0.0, -5.0), rf_vec3_make(0.0, 0.0, -1.0), 0);
+  CHECK(rfk_peel_may_meet_more(2, ray)); /* inside: its way out is still to find */
+  ray.stack = rfk_peel_stack_pop(ray.stack);
+  CHECK(rfk_peel_stack_top(ray.stack) < 0);
+  CHECK(!rfk_peel_may_meet_more(2, ray));
+  CHECK(!rfk_peel_may_meet_more(1, ray));
+  CHECK(rfk_peel_may_meet_more(3, ray)); /* a third layer: glass behind glass may follow */
+  CHECK(rfk_peel_may_meet_more(8, ray));
+}
+
 int main(void)
 {
   test_single_sphere();
   test_nested();
   test_overlapping();
   test_bad_input();
+  test_leaving_two_layers();
   return RF_TEST_SUMMARY();
 }

@@ -220,6 +220,23 @@ vec3 rfBehind(vec3 P, vec3 T)
   return rfEnvironment(T);
 }
 
+// rfBehind in one lookup over the whole footprint (rfEnvironmentLookup, as the front's
+// reflection), for the share an exit reflects back inside: a few percent of the pixel, whose
+// loop over the footprint llvmpipe ran at every pixel of the glass (DIR's shading 1-2.5 ms
+// shorter single-sampled at 512, the same pictures to 0.01 dB; docs/benchmark.md, *The exit
+// reflection's light in one lookup*).
+vec3 rfBehindInOneLookup(vec3 P, vec3 T)
+{
+#ifdef RF_SCENE_REFRACTION
+  vec3 scene;
+  if (rfSceneAlong(P, T, scene))
+  {
+    return scene;
+  }
+#endif
+  return rfEnvironmentLookup(T);
+}
+
 // The index of refraction of a material for a colour channel (0 red, 1 green, 2 blue); the
 // green one without dispersion.
 float rfMaterialIndexOfRefraction(int material, int channel)
@@ -533,7 +550,8 @@ vec3 rfRayColour(rfRay ray, rfFootprint reflectedFootprint, rfFootprint transmit
 #if defined(RF_METHOD_PEEL) || defined(RF_EXIT_REFLECTION)
   if (ray.branchWeight > 0.0)
   {
-    transmitted = mix(transmitted, rfBehind(ray.branchP, ray.branchT), ray.branchWeight);
+    transmitted =
+      mix(transmitted, rfBehindInOneLookup(ray.branchP, ray.branchT), ray.branchWeight);
   }
 #endif
 #ifdef RF_TINT

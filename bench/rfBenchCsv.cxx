@@ -140,7 +140,8 @@ std::vector<Column> Columns(int stageCount)
     [](Row& r, const std::string& v) { r.Pixels = std::atol(v.c_str()); } });
   c.push_back({ "tir_pixels", [](const Row& r) { return std::to_string(r.TirPixels); },
     [](Row& r, const std::string& v) { r.TirPixels = std::atol(v.c_str()); } });
-  c.push_back({ "peel_layers_found", [](const Row& r) { return std::to_string(r.PeelLayersFound); },
+  c.push_back({ "peel_layers_found",
+    [](const Row& r) { return std::to_string(r.PeelLayersFound); },
     [](Row& r, const std::string& v) { r.PeelLayersFound = std::atoi(v.c_str()); } });
   c.push_back({ "peel_draws", [](const Row& r) { return std::to_string(r.PeelDraws); },
     [](Row& r, const std::string& v) { r.PeelDraws = std::atoi(v.c_str()); } });

@@ -206,17 +206,27 @@ bool rfSceneAlong(vec3 P, vec3 T, out vec3 colour)
 }
 #endif
 
+// Whether the ray P + t T leaving the glass meets the opaque scene, and its colour there; never
+// when the scene behind is not refracted.
+bool rfSceneBehind(vec3 P, vec3 T, out vec3 scene)
+{
+#ifdef RF_SCENE_REFRACTION
+  return rfSceneAlong(P, T, scene);
+#else
+  scene = vec3(0.0);
+  return false;
+#endif
+}
+
 // What the glass shows along the ray P + t T leaving it: the opaque scene where the ray meets
 // it, else the environment.
 vec3 rfBehind(vec3 P, vec3 T)
 {
-#ifdef RF_SCENE_REFRACTION
   vec3 scene;
-  if (rfSceneAlong(P, T, scene))
+  if (rfSceneBehind(P, T, scene))
   {
     return scene;
   }
-#endif
   return rfEnvironment(T);
 }
 
@@ -227,13 +237,11 @@ vec3 rfBehind(vec3 P, vec3 T)
 // reflection's light in one lookup*).
 vec3 rfBehindInOneLookup(vec3 P, vec3 T)
 {
-#ifdef RF_SCENE_REFRACTION
   vec3 scene;
-  if (rfSceneAlong(P, T, scene))
+  if (rfSceneBehind(P, T, scene))
   {
     return scene;
   }
-#endif
   return rfEnvironmentLookup(T);
 }
 

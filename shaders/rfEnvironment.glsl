@@ -39,26 +39,33 @@ vec3 rfEnvironmentLookup(vec3 directionVC)
 #endif
 }
 
-// The most lookups one footprint is averaged from along its long axis: on the torus 2 gained
-// 0.4 dB of the 1.2 that 8 gain, 4 gained 1.0 at the cost of 8 (docs/benchmark.md).
+// The most lookups one footprint is averaged from along its long axis: on the torus (with the
+// built-in environment, then looked up so too) 2 gained 0.4 dB of the 1.2 that 8 gain, 4
+// gained 1.0 at the cost of 8 (docs/benchmark.md).
 #define RF_MAX_ENVIRONMENT_TAPS 4
 
-// The environment over the footprint of a pixel's rays around directionVC: where the
-// directions spread along one axis (rfEnvironmentAxis) more than 1.5 times across it, the mean
-// of lookups spaced along that axis, each standing for its share of the axis, as a GPU's
-// anisotropic filtering does; else one lookup over the whole footprint. A cube map's lookup is
-// a cone as wide as the share (at least rfEnvironmentWidth); the built-in environment's is the
-// parallelogram of the share and the short axis, filtered in closed form, so it does not blur
-// across the long axis what the rays resolve there (the sharp tile edge down the middle of the
-// benchmark's torus, 3-5 pixels wide with cones; docs/benchmark.md, *The built-in environment
-// over the footprint*). Both are the one loop (one pass for the single lookup): as an early
-// return before the loop, the single lookup cost llvmpipe a lookup more at every pixel (it runs
-// both paths, and the loop at least once), 3-10 ms of a 1024 px full-window sphere's shading
-// with the built-in environment. A single lookup as wide as the long axis would blur across
-// what the rays resolve, one as wide as the short axis aliases along the long one (speckle in
-// the rings inside the torus's hole and along its rims).
+// The environment over the footprint of a pixel's rays around directionVC. The built-in
+// environment filters the whole parallelogram in one lookup, in closed form
+// (rfk_builtin_environment_footprint), its tiles strip by strip along the footprint, so that it
+// does not blur across the long axis what the rays resolve there (the sharp tile edge down the
+// middle of the benchmark's torus, 3-5 pixels wide with cones; docs/benchmark.md, *The
+// built-in environment over the footprint*). It was looked up as a cube map is, each lookup
+// evaluating the whole environment; the strips read 0.2-0.3 dB closer to the truth on the
+// sphere and the torus for 1-2 ms less of DIR's shading (*The ground's strips*). A cube map:
+// where the directions spread along one axis (rfEnvironmentAxis) more than 1.5 times across
+// it, the mean of lookups spaced along that axis, each a cone as wide as its share of the
+// axis (at least rfEnvironmentWidth), as a GPU's anisotropic filtering does; else one lookup
+// over the whole footprint. Both are the one loop (one pass for the single lookup): as an
+// early return before the loop, the single lookup cost llvmpipe a lookup more at every pixel
+// (it runs both paths, and the loop at least once), 3-10 ms of a 1024 px full-window sphere's
+// shading with the built-in environment. A single lookup as wide as the long axis would blur
+// across what the rays resolve, one as wide as the short axis aliases along the long one
+// (speckle in the rings inside the torus's hole and along its rims).
 vec3 rfEnvironment(vec3 directionVC)
 {
+#if !defined(RF_ENV_CUBEMAP) && !defined(RF_ENV_BACKGROUND)
+  return rfEnvironmentLookup(directionVC); // the whole footprint at once (above)
+#else
   float width = rfEnvironmentWidth;
   vec3 longAxis = rfEnvironmentAxis;
   float span = length(longAxis);
@@ -76,4 +83,5 @@ vec3 rfEnvironment(vec3 directionVC)
   rfEnvironmentWidth = width;
   rfEnvironmentAxis = longAxis;
   return sum / taps;
+#endif
 }

@@ -92,10 +92,11 @@ static void test_width_zero_is_the_point_value(void)
 }
 
 /* Over 3000 directions: the filtered value's RMS distance to the footprint mean against the
- * point value's. Measured: at 0.01 rad 0.0185 against 0.0572 (0.32), at 0.05 rad 0.0332
- * against 0.1272 (0.26), at 0.2 rad 0.0602 against 0.2292 (0.26). Widening each line by the
- * whole width instead of half of it read 0.52 at 0.01 rad (worse than the point value on the
- * sky). */
+ * point value's. Measured: at 0.01 rad 0.0137 against 0.0572 (0.24), at 0.05 rad 0.0149
+ * against 0.1272 (0.12), at 0.2 rad 0.0363 against 0.2292 (0.16); before the ground's tiles
+ * were filtered in strips 0.0185, 0.0332 and 0.0602 (0.32, 0.26, 0.26). Widening each line by
+ * the whole width instead of half of it read 0.52 at 0.01 rad (worse than the point value on
+ * the sky). */
 static void test_closer_to_the_footprint_mean(double width)
 {
   const int count = 3000;
@@ -149,9 +150,11 @@ static void test_extreme_widths_are_finite(void)
 /* A footprint `ratio` times longer one way than the other, turned by a different angle about
  * each of 3000 directions: the footprint's filter against the parallelogram's mean, beside
  * one cone as wide as the short span (it aliases along the long one) and one as wide as the
- * long span (it blurs across). Measured: long 0.04 rad, ratio 8: 0.0253 footprint, 0.0711
- * short cone, 0.0601 long cone, 0.0931 point; long 0.1, ratio 4: 0.0451, 0.0874, 0.0851,
- * 0.1460. */
+ * long span (it blurs across). Measured: long 0.04 rad, ratio 8: 0.0161 footprint, 0.0727
+ * short cone, 0.0508 long cone, 0.0931 point; long 0.1, ratio 4: 0.0239, 0.0899, 0.0686,
+ * 0.1460. Before the ground's tiles were filtered in strips along the footprint (one box of
+ * its extents in u and v, which blurs across a footprint lying along a diagonal of the tiles)
+ * the footprint read 0.0253 and 0.0451, 0.27 and 0.31 of the point value's distance. */
 static void test_long_footprints(double longSpan, double ratio)
 {
   const int count = 3000;
@@ -195,7 +198,7 @@ static void test_long_footprints(double longSpan, double ratio)
     longSpan, longSpan / ratio, footprint_error, short_error, long_error, point_error);
   CHECK(footprint_error < 0.6 * short_error);
   CHECK(footprint_error < 0.6 * long_error);
-  CHECK(footprint_error < 0.5 * point_error);
+  CHECK(footprint_error < 0.2 * point_error);
 }
 
 /* Zero spans are the point value exactly; the isotropic filter is the footprint of two spans

@@ -8,6 +8,10 @@
 #include "rf_kernel_prelude.h"
 #endif
 
+/* Strips of the footprint the ground's tiles are averaged over
+ * (rfk_builtin_environment_footprint). */
+#define RF_GROUND_STRIPS 4
+
 /* The box-filtered square wave of period 2 (+1 where floor(x) is even, -1 where odd) over
  * [x - width / 2, x + width / 2], width > 0: the difference of its integral at both ends
  * (the integral of the wave is a triangle wave). */
@@ -43,10 +47,11 @@ RF_KERNEL rf_float rfk_footprint_extent(rf_float alongA, rf_float alongB, rf_flo
  * alias, and a footprint long one way is not blurred the other (across the torus's rims, where
  * the rays spread along the rim and not across it). Each pattern is box-filtered in its own
  * coordinate over the footprint's extent there (the meridians in azimuth, the ring in height,
- * the tiles in the ground plane's u and v), the sun's lobe widened as a Gaussian of the box's
- * variance (the spans' mean square / 12) with its energy kept. World space, +y up; the
- * direction need not be unit, the spans are taken as turns of the unit direction. A zero or
- * non-finite direction gives the horizon colour. Linear RGB, at most about 3 (the sun). */
+ * the tiles in the ground plane's u and v, strip by strip along the footprint), the sun's lobe
+ * widened as a Gaussian of the box's variance (the spans' mean square / 12) with its energy
+ * kept. World space, +y up; the direction need not be unit, the spans are taken as turns of
+ * the unit direction. A zero or non-finite direction gives the horizon colour. Linear RGB, at
+ * most about 3 (the sun). */
 RF_KERNEL rf_float3 rfk_builtin_environment_footprint(
   rf_float3 directionWorld, rf_float3 spanA, rf_float3 spanB)
 {
@@ -99,16 +104,38 @@ RF_KERNEL rf_float3 rfk_builtin_environment_footprint(
   /* Ground: unit tiles on the plane y = -1 (the point u = d.x / down, v = d.z / down), fading
    * into the horizon where they would alias. A turn e of the direction moves the point by
    * ((e.x + u e.y) / down, (e.z + v e.y) / down). Tiles of different parity: the product of the
-   * two filtered waves is -1 there; a footprint wider than a few tiles gives their mean. */
+   * two filtered waves is -1 there; a footprint wider than a few tiles gives their mean. The
+   * product filters the box of the footprint's extents in u and in v, which blurs across the
+   * whole box where the footprint lies along a diagonal of the tiles (the tile edges the
+   * torus's rings compress): it is averaged over RF_GROUND_STRIPS strips of the footprint
+   * along the span that moves the point most, each filtered over its own, smaller box. The
+   * strips replace lookups of the whole environment spaced along the footprint's long axis
+   * (up to four, each evaluating the sky too), docs/benchmark.md, *The ground's strips*. */
   rf_float down = -d.y;
   rf_float safeDown = rf_max(down, 1e-4);
   rf_float u = d.x / safeDown;
   rf_float v = d.z / safeDown;
-  rf_float fu = rfk_footprint_extent(
-    (spanA.x + u * spanA.y) / safeDown, (spanB.x + u * spanB.y) / safeDown, cap);
-  rf_float fv = rfk_footprint_extent(
-    (spanA.z + v * spanA.y) / safeDown, (spanB.z + v * spanB.y) / safeDown, cap);
-  rf_float checker = 0.5 - 0.5 * rfk_square_wave_over(u, fu) * rfk_square_wave_over(v, fv);
+  rf_float2 moveA =
+    rf_make2((spanA.x + u * spanA.y) / safeDown, (spanA.z + v * spanA.y) / safeDown);
+  rf_float2 moveB =
+    rf_make2((spanB.x + u * spanB.y) / safeDown, (spanB.z + v * spanB.y) / safeDown);
+  rf_bool alongA = rf_abs(moveA.x) + rf_abs(moveA.y) >= rf_abs(moveB.x) + rf_abs(moveB.y);
+  rf_float2 along = alongA ? moveA : moveB;
+  rf_float2 across = alongA ? moveB : moveA;
+  /* Not finite or wider than the cap (the patterns' mean already): the strips do not move. */
+  rf_float alongU = rf_abs(along.x) <= cap ? along.x : 0.0;
+  rf_float alongV = rf_abs(along.y) <= cap ? along.y : 0.0;
+  rf_float strips = rf_float_of(RF_GROUND_STRIPS);
+  rf_float fu = rfk_footprint_extent(along.x / strips, across.x, cap);
+  rf_float fv = rfk_footprint_extent(along.y / strips, across.y, cap);
+  rf_float product = 0.0;
+  for (int i = 0; i < RF_GROUND_STRIPS; ++i)
+  {
+    rf_float offset = (rf_float_of(i) + 0.5) / strips - 0.5;
+    product = product + rfk_square_wave_over(u + offset * alongU, fu) *
+        rfk_square_wave_over(v + offset * alongV, fv);
+  }
+  rf_float checker = 0.5 - 0.5 * product / strips;
   rf_float fade = rf_smoothstep(0.0, 0.35, down);
   return rf_mix3(horizon, rf_mix3(tileLight, tileDark, checker), fade);
 }

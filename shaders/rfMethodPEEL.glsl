@@ -166,8 +166,10 @@ int rfPeelTrace(vec3 P1, vec3 T1, int material, int channel, bool split, out vec
   rfk_peel_ray ray = rfk_peel_entered(P1, T1, material);
   rfk_peel_ray branch;
   // The layers that hold glass this frame (rfk_peel_may_meet_more); the others read as empty.
+  // Peeling that found all K may have left more behind them.
   int count = min(RF_PEEL_LAYERS, rfPeelLayersFound);
-  rfk_peel_follow(0, count, channel, rfCamera(), ray, interfaces, RF_PEEL_BOUNCES,
+  bool capped = rfPeelLayersFound >= RF_PEEL_LAYERS;
+  rfk_peel_follow(0, count, capped, channel, rfCamera(), ray, interfaces, RF_PEEL_BOUNCES,
     RF_TIR_POLICY, rfGlassExtent, rfGlassDepthRange, split, branch, branchWeight);
   P2 = ray.P;
   T2 = ray.T;

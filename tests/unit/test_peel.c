@@ -467,18 +467,20 @@ static void test_bad_input(void)
 
 /* Where two layers hold the glass (one glass's front and back at every pixel), a ray that has
  * left it is not searched for more: only glass behind glass, which needs a third layer
- * somewhere, could be met on its way (rfk_peel_may_meet_more). */
+ * somewhere, could be met on its way (rfk_peel_may_meet_more). Two layers captured by PEEL 2
+ * (capped) may have more behind them. */
 static void test_leaving_two_layers(void)
 {
   rfk_peel_ray ray =
     rfk_peel_entered(rf_vec3_make(0.0, 0.0, -5.0), rf_vec3_make(0.0, 0.0, -1.0), 0);
-  CHECK(rfk_peel_may_meet_more(2, ray)); /* inside: its way out is still to find */
+  CHECK(rfk_peel_may_meet_more(2, RF_FALSE, ray)); /* inside: its way out is still to find */
   ray.stack = rfk_peel_stack_pop(ray.stack);
   CHECK(rfk_peel_stack_top(ray.stack) < 0);
-  CHECK(!rfk_peel_may_meet_more(2, ray));
-  CHECK(!rfk_peel_may_meet_more(1, ray));
-  CHECK(rfk_peel_may_meet_more(3, ray)); /* a third layer: glass behind glass may follow */
-  CHECK(rfk_peel_may_meet_more(8, ray));
+  CHECK(!rfk_peel_may_meet_more(2, RF_FALSE, ray));
+  CHECK(!rfk_peel_may_meet_more(1, RF_FALSE, ray));
+  CHECK(rfk_peel_may_meet_more(2, RF_TRUE, ray)); /* K = 2 found 2: there may be more */
+  CHECK(rfk_peel_may_meet_more(3, RF_FALSE, ray)); /* a third layer: glass behind glass */
+  CHECK(rfk_peel_may_meet_more(8, RF_FALSE, ray));
 }
 
 int main(void)

@@ -50,7 +50,7 @@ vec3 rfEnvironmentLookup(vec3 directionVC)
 // does not blur across the long axis what the rays resolve there (the sharp tile edge down the
 // middle of the benchmark's torus, 3-5 pixels wide with cones; docs/benchmark.md, *The
 // built-in environment over the footprint*). It was looked up as a cube map is, each lookup
-// evaluating the whole environment; the strips read 0.2-0.3 dB closer to the truth on the
+// evaluating the whole environment; the strips read 0.1-0.3 dB closer to the truth on the
 // sphere and the torus for 1-2 ms less of DIR's shading (*The ground's strips*). A cube map:
 // where the directions spread along one axis (rfEnvironmentAxis) more than 1.5 times across
 // it, the mean of lookups spaced along that axis, each a cone as wide as its share of the

@@ -428,7 +428,7 @@ RF_KERNEL rfk_peel_ray rfk_peel_entered(rf_float3 P1, rf_float3 T1, int material
  * levels apart (docs/benchmark.md, *PEEL leaves glass of two layers for good*). PEEL 2
  * captures two layers whatever the glass holds: on the isosurface, whose blobs lie beside and
  * behind each other, a ray that has left one blob after a total internal reflection meets the
- * next (its rows with TIR followed read 0.18-0.32 dB less when it was not searched for). */
+ * next (its rows with TIR followed read 0.17-0.32 dB less when it was not searched for). */
 RF_KERNEL rf_bool rfk_peel_may_meet_more(int count, rf_bool capped, rfk_peel_ray r)
 {
   return count > 2 || capped || rfk_peel_stack_top(r.stack) >= 0;
